@@ -1,0 +1,16 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace shelfdock::app {
+
+/// Exit codes shared by every subcommand.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;   ///< the job ran but did not succeed (e.g. docking failed)
+inline constexpr int kExitBadInput = 2;  ///< bad input: file, field or parameter
+
+/// Each subcommand registers itself on the app and sets `*exit_code` when it runs. The run
+/// callbacks may throw io::InputError; main turns that into kExitBadInput.
+void AddDetectCommand(CLI::App& app, int* exit_code);
+
+}  // namespace shelfdock::app

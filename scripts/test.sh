@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# The test command: installs dependencies, builds everything, checks formatting and runs every test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh
+bash scripts/check_format.sh
+ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600

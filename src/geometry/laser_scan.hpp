@@ -1,0 +1,30 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace shelfdock::geometry {
+
+/// One 2D LiDAR scan, field for field as ROS sensor_msgs/LaserScan. Beam i points at
+/// angle_min + i * angle_increment in the scan's own frame (`lidar`). A beam with no return is
+/// NaN in `ranges` (`null` in the JSON files); ranges outside [range_min, range_max] are also
+/// treated as no return by consumers.
+struct LaserScan {
+  double angle_min = 0.0;        ///< [rad]
+  double angle_max = 0.0;        ///< [rad]
+  double angle_increment = 0.0;  ///< [rad]
+  double range_min = 0.0;        ///< [m]
+  double range_max = 0.0;        ///< [m]
+  std::vector<double> ranges;    ///< [m], NaN for no return
+  std::vector<double> intensities;
+  double time_increment = 0.0;  ///< [s] between beams
+  double scan_time = 0.0;       ///< [s] between scans
+  double stamp = 0.0;           ///< [s] time of the first beam
+  std::string frame_id = "lidar";
+
+  double BeamAngle(std::size_t i) const {
+    return angle_min + static_cast<double>(i) * angle_increment;
+  }
+};
+
+}  // namespace shelfdock::geometry

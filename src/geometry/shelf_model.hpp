@@ -1,0 +1,35 @@
+#pragma once
+
+#include <array>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace shelfdock::geometry {
+
+enum class LegShape { kRectangle, kCircle };
+
+/// A leg's cross-section. For round legs length == width == diameter.
+struct LegModel {
+  LegShape shape = LegShape::kRectangle;
+  double length_m = 0.04;  ///< [m] along the shelf's long side (G_h in the paper)
+  double width_m = 0.04;   ///< [m] along the shelf's short side (G_w in the paper)
+
+  double Radius() const { return 0.5 * length_m; }  ///< round legs only
+};
+
+/// A shelf type. length/width are leg-centre to leg-centre distances (length >= width); the
+/// shelf frame has its origin at the centre, x along the long side.
+struct ShelfModel {
+  std::string name;
+  double length_m = 0.0;  ///< [m] long side, L
+  double width_m = 0.0;   ///< [m] short side, W
+  LegModel leg;
+
+  double Diagonal() const;
+  bool IsSquare(double tolerance_m = 1e-3) const;
+  /// Leg centres in the shelf frame, counter-clockwise from (-L/2, -W/2).
+  std::array<Eigen::Vector2d, 4> LegCentres() const;
+};
+
+}  // namespace shelfdock::geometry

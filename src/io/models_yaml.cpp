@@ -1,0 +1,60 @@
+#include "io/models_yaml.hpp"
+
+#include <set>
+
+#include "io/yaml_fields.hpp"
+
+namespace shelfdock::io {
+
+std::vector<geometry::ShelfModel> ReadShelfModels(const std::string& path) {
+  const YAML::Node root = LoadYamlFile(path);
+  YamlFields top(root, path, "");
+  const YAML::Node list = top.Child("models");
+  top.RejectUnknown();
+  if (!list.IsDefined() || !list.IsSequence() || list.size() == 0) {
+    throw InputError(path, "models", "expected a non-empty list of shelf models");
+  }
+
+  std::vector<geometry::ShelfModel> models;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string where = "models[" + std::to_string(i) + "]";
+    YamlFields f(list[i], path, where);
+    geometry::ShelfModel m;
+    m.length_m = 0.0;
+    m.width_m = 0.0;
+    f.Read("name", m.name);
+    f.Read("length", m.length_m);
+    f.Read("width", m.width_m);
+    f.Require(!m.name.empty(), "name", "a non-empty string");
+    f.Require(names.insert(m.name).second, "name", "unique among the models");
+    f.Require(m.length_m > 0.0, "length", "> 0 (leg centre to leg centre, metres)");
+    f.Require(m.width_m > 0.0, "width", "> 0 (leg centre to leg centre, metres)");
+    f.Require(m.length_m >= m.width_m, "length", ">= width (length is the long side)");
+
+    YamlFields leg(f.Child("leg"), path, where + ".leg");
+    f.RejectUnknown();
+    std::string shape = "rectangle";
+    m.leg.length_m = 0.0;
+    m.leg.width_m = 0.0;
+    leg.Read("shape", shape);
+    leg.Read("length", m.leg.length_m);
+    leg.Read("width", m.leg.width_m);
+    leg.RejectUnknown();
+    if (shape == "rectangle") {
+      m.leg.shape = geometry::LegShape::kRectangle;
+    } else if (shape == "circle") {
+      m.leg.shape = geometry::LegShape::kCircle;
+      if (m.leg.width_m == 0.0) m.leg.width_m = m.leg.length_m;
+    } else {
+      throw InputError(path, where + ".leg.shape", "expected rectangle or circle, got " + shape);
+    }
+    leg.Require(m.leg.length_m > 0.0, "length", "> 0 (metres)");
+    leg.Require(m.leg.width_m > 0.0, "width", "> 0 (metres)");
+    leg.Require(m.leg.length_m < m.width_m, "length", "smaller than the shelf's width");
+    models.push_back(m);
+  }
+  return models;
+}
+
+}  // namespace shelfdock::io

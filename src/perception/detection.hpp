@@ -1,0 +1,42 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/pose2.hpp"
+
+namespace shelfdock::perception {
+
+/// One shelf found in a scan, in the scan's frame (`lidar`).
+struct Detection {
+  std::string model;                  ///< name of the matched shelf model
+  geometry::Pose2 T_lidar_shelf;      ///< shelf centre and heading (long side)
+  double length_m = 0.0;              ///< fitted long side (mean of the long edges)
+  double width_m = 0.0;               ///< fitted short side (mean of the short edges)
+  std::vector<Eigen::Vector2d> legs;  ///< fitted leg centres [m], lidar frame
+  int legs_used = 0;                  ///< 3 or 4
+  double err_sum = 0.0;               ///< Eq. 2 err_L + err_W of the matched model [m]
+  double cost = 0.0;                  ///< final cost of the shelf-pose fit [m^2]
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< of (x, y, yaw) [m^2, rad^2]
+};
+
+/// Counters that tell where candidates were dropped; useful when tuning on real scans.
+struct DetectionStats {
+  int valid_points = 0;      ///< finite returns within [range_min, range_max]
+  int roi_points = 0;        ///< points kept by the region of interest
+  int clusters = 0;          ///< clusters before size screening
+  int trailing_removed = 0;  ///< points dropped by the Eq. 1 trailing-point filter
+  int leg_candidates = 0;    ///< clusters that fit the size of some model's leg
+  int leg_sets = 0;          ///< 3- and 4-leg sets that passed the geometric search
+  int model_pairs = 0;       ///< points-model pairs that passed Eq. 2 screening
+};
+
+struct DetectionResult {
+  std::vector<Detection> detections;  ///< best first; with a preset, nearest to it first
+  DetectionStats stats;
+};
+
+}  // namespace shelfdock::perception
