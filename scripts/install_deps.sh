@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build ccache clang-format pkg-config
   libeigen3-dev libceres-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev libapriltag-dev
+  librosbag-storage-dev libsensor-msgs-dev pluginlib-dev
 )
 
 missing=()

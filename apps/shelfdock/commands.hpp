@@ -12,5 +12,6 @@ inline constexpr int kExitBadInput = 2;  ///< bad input: file, field or paramete
 /// Each subcommand registers itself on the app and sets `*exit_code` when it runs. The run
 /// callbacks may throw io::InputError; main turns that into kExitBadInput.
 void AddDetectCommand(CLI::App& app, int* exit_code);
+void AddBagCommand(CLI::App& app, int* exit_code);
 
 }  // namespace shelfdock::app

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = shelfdock::app::kExitOk;
   shelfdock::app::AddDetectCommand(app, &exit_code);
+  shelfdock::app::AddBagCommand(app, &exit_code);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,56 @@
+// `shelfdock bag`: lists the LaserScan topics of a ROS 1 bag, or converts one topic to the JSON
+// Lines scan format that `detect` reads.
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "io/input_error.hpp"
+#include "io/rosbag_scans.hpp"
+#include "io/scan_json.hpp"
+
+namespace shelfdock::app {
+namespace {
+
+struct BagOptions {
+  std::string bag;
+  std::string topic;
+  std::string out;
+};
+
+int RunBag(const BagOptions& opt) {
+  if (opt.out.empty()) {
+    nlohmann::json topics = nlohmann::json::array();
+    for (const auto& t : io::ListBagScanTopics(opt.bag)) {
+      topics.push_back({{"topic", t.topic}, {"messages", t.messages}});
+    }
+    std::cout << nlohmann::json{{"bag", opt.bag}, {"laser_scan_topics", topics}}.dump() << "\n";
+    return kExitOk;
+  }
+  const auto scans = io::ReadBagScans(opt.bag, opt.topic);
+  std::ofstream out(opt.out);
+  if (!out) throw io::InputError(opt.out, "", "cannot write file");
+  for (const auto& scan : scans) out << io::ScanToJson(scan).dump() << "\n";
+  std::cout << nlohmann::json{{"bag", opt.bag},
+                              {"topic", opt.topic},
+                              {"scans", scans.size()},
+                              {"out", opt.out}}
+                   .dump()
+            << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+void AddBagCommand(CLI::App& app, int* exit_code) {
+  auto opt = std::make_shared<BagOptions>();
+  CLI::App* cmd = app.add_subcommand("bag", "list or convert the LaserScan topics of a ROS 1 bag");
+  cmd->add_option("--bag", opt->bag, "ROS 1 bag file (format 2.0)")->required();
+  cmd->add_option("--topic", opt->topic, "LaserScan topic to convert (default: all)");
+  cmd->add_option("--out", opt->out, "write the scans as JSON Lines here (default: list topics)");
+  cmd->callback([opt, exit_code] { *exit_code = RunBag(*opt); });
+}
+
+}  // namespace shelfdock::app
