@@ -1,0 +1,43 @@
+#pragma once
+
+#include <cstdint>
+#include <random>
+
+#include "geometry/pose2.hpp"
+
+namespace shelfdock::sim {
+
+/// Wheel odometry errors. Scale errors are drawn once per run (a worn or mis-calibrated wheel
+/// keeps its error), slip is a random walk in travelled distance, so the pose drifts the way
+/// dead reckoning does: heading error grows with the wheel difference, lateral error with the
+/// integral of the heading error.
+struct OdometryNoiseConfig {
+  double wheel_scale_std = 0.002;        ///< [-] per-wheel radius error, fixed per run
+  double wheel_base_scale_std = 0.005;   ///< [-] effective track-width error, fixed per run
+  double slip_std_m_per_sqrt_m = 0.002;  ///< [m/sqrt(m)] per-wheel slip random walk
+};
+
+/// Dead reckoning from simulated wheel encoders. Fed with the TRUE wheel travel of each step;
+/// integrates what the encoders would report. Starts at the identity of the `odom` frame.
+class WheelOdometry {
+ public:
+  WheelOdometry(const OdometryNoiseConfig& config, double wheel_base_m, uint64_t seed);
+
+  /// One control step: the true distance (centre of the axle) and heading change.
+  void Update(double true_distance_m, double true_dyaw_rad);
+
+  geometry::Pose2 T_odom_base() const { return T_odom_base_; }
+  double left_scale_error() const { return left_scale_error_; }
+  double right_scale_error() const { return right_scale_error_; }
+
+ private:
+  OdometryNoiseConfig config_;
+  double wheel_base_m_;
+  std::mt19937_64 rng_;
+  double left_scale_error_ = 0.0;
+  double right_scale_error_ = 0.0;
+  double wheel_base_estimate_m_;  ///< the track width the odometry believes
+  geometry::Pose2 T_odom_base_;
+};
+
+}  // namespace shelfdock::sim
