@@ -1,0 +1,207 @@
+#include "sim/lidar.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace shelfdock::sim {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kDepthEdge_m = 0.05;  // sub-ray spread that counts as straddling an edge
+
+/// One sub-ray's return: slant range, what it hit and how strongly it reflects.
+struct SubHit {
+  double range_m = kInf;  // slant range along the beam
+  const Primitive* primitive = nullptr;
+  bool floor = false;
+  double reflectivity = 0.0;
+  double cos_incidence = 1.0;
+  bool shiny = false;
+};
+
+/// Beam direction in the level frame for a beam at angle theta in the tilted scan plane:
+/// d = Ry(pitch) * Rx(-roll) * (cos theta, sin theta, 0). Returns azimuth, horizontal share
+/// of a slant metre, and climb per horizontal metre.
+void TiltedDirection(double theta, double pitch, double roll, double* azimuth, double* horiz,
+                     double* dz_dt) {
+  const double cp = std::cos(pitch), sp = std::sin(pitch);
+  const double cr = std::cos(roll), sr = std::sin(roll);
+  const double ct = std::cos(theta), st = std::sin(theta);
+  const double dx = cp * ct - sp * sr * st;
+  const double dy = cr * st;
+  const double dz = -sp * ct - cp * sr * st;
+  *horiz = std::hypot(dx, dy);
+  *azimuth = std::atan2(dy, dx);
+  *dz_dt = dz / *horiz;
+}
+}  // namespace
+
+struct Lidar::Echo {
+  SubHit centre;
+  double range_m = kNaN;  // after mixing, before noise
+  double intensity = 0.0;
+  bool mixed = false;
+};
+
+Lidar::Lidar(LidarConfig config, std::uint64_t seed) : config_(config), rng_(seed) {
+  assert(!Validate(config_).has_value());
+}
+
+Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_lidar,
+                            double beam_angle_rad, const std::vector<Primitive>& moving) const {
+  const LidarConfig& c = config_;
+  double azimuth = beam_angle_rad, horiz = 1.0, dz_dt = 0.0;
+  if (c.enable_tilt) {
+    TiltedDirection(beam_angle_rad, c.tilt_pitch_rad, c.tilt_roll_rad, &azimuth, &horiz, &dz_dt);
+  }
+  const double floor_t = dz_dt < 0.0 ? c.mount_height_m / -dz_dt : kInf;  // h / tan(depression)
+
+  auto cast = [&](double u) {  // u in [-0.5, 0.5] across the footprint
+    const double yaw = T_world_lidar.yaw + azimuth + u * c.beam_divergence_rad;
+    CastQuery q;
+    q.ray.dir = Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+    const Eigen::Vector2d across(-q.ray.dir.y(), q.ray.dir.x());
+    q.ray.origin = T_world_lidar.translation() + u * c.beam_aperture_m * across;
+    q.max_t_m = std::min(c.range_max_m * horiz, floor_t);
+    q.z0_m = c.mount_height_m;
+    q.dz_dt = dz_dt;
+    RayHit hit = world.static_grid().Cast(q);
+    for (const Primitive& p : moving) CastAgainst(q, p, &hit);
+    SubHit s;
+    if (hit.primitive != nullptr) {
+      s.range_m = hit.t_m / horiz;
+      s.primitive = hit.primitive;
+      s.reflectivity = hit.primitive->material.reflectivity;
+      s.shiny = hit.primitive->material.shiny;
+      const Eigen::Vector2d p = q.ray.origin + hit.t_m * q.ray.dir;
+      s.cos_incidence = std::abs(SurfaceNormal(*hit.primitive, p, q.ray.origin).dot(q.ray.dir));
+    } else if (floor_t <= c.range_max_m * horiz) {
+      s.range_m = floor_t / horiz;
+      s.floor = true;
+      s.reflectivity = c.floor_reflectivity;
+      s.cos_incidence = std::abs(dz_dt) * horiz;  // grazing: sin of the depression
+    }
+    return s;
+  };
+  auto strength = [](const SubHit& s) {
+    return s.reflectivity * std::max(s.cos_incidence, 0.05) / std::max(s.range_m * s.range_m, 1.0);
+  };
+
+  Echo echo;
+  echo.centre = cast(0.0);
+  echo.range_m = echo.centre.range_m;
+  echo.intensity = std::isfinite(echo.range_m) ? strength(echo.centre) : 0.0;
+  if (!c.enable_footprint) return echo;
+
+  // Cheap test first: if the footprint's two edges agree with its centre, no depth edge.
+  const SubHit left = cast(-0.5);
+  const SubHit right = cast(0.5);
+  const double lo = std::min({left.range_m, right.range_m, echo.centre.range_m});
+  const double hi = std::max({left.range_m, right.range_m, echo.centre.range_m});
+  if (std::isfinite(hi) && hi - lo < kDepthEdge_m) return echo;
+  if (!std::isfinite(lo)) return echo;  // nothing anywhere in the cone
+
+  // A depth edge: the echo is the energy-weighted mean of the sub-rays that return, with a
+  // Gaussian beam profile (sigma a quarter of the footprint). This mixed range is what puts
+  // trailing points between a leg and the wall behind it.
+  const int n = c.footprint_rays;
+  double w_total = 0.0, w_hit = 0.0, e_sum = 0.0, er_sum = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double u = -0.5 + static_cast<double>(k) / (n - 1);
+    const SubHit s =
+        k == 0 ? left : (k == n - 1 ? right : (2 * k == n - 1 ? echo.centre : cast(u)));
+    const double w = std::exp(-0.5 * (u / 0.25) * (u / 0.25));
+    w_total += w;
+    if (!std::isfinite(s.range_m)) continue;
+    w_hit += w;
+    const double e = w * strength(s);
+    e_sum += e;
+    er_sum += e * s.range_m;
+  }
+  if (w_hit < c.min_echo_fraction * w_total || e_sum <= 0.0) {
+    echo.range_m = kNaN;
+    echo.intensity = 0.0;
+    return echo;
+  }
+  echo.range_m = er_sum / e_sum;
+  echo.intensity = e_sum / w_total;
+  echo.mixed = true;
+  return echo;
+}
+
+geometry::LaserScan Lidar::Scan(const World& world, const geometry::Pose2& T_world_lidar,
+                                double t0_s) {
+  return Scan(
+      world, [&T_world_lidar](double) { return T_world_lidar; }, t0_s);
+}
+
+geometry::LaserScan Lidar::Scan(const World& world, const PoseAt& T_world_lidar_at, double t0_s) {
+  return ScanLabelled(world, T_world_lidar_at, t0_s).scan;
+}
+
+LabelledScan Lidar::ScanLabelled(const World& world, const PoseAt& T_world_lidar_at, double t0_s) {
+  const LidarConfig& c = config_;
+  LabelledScan out;
+  geometry::LaserScan& scan = out.scan;
+  scan.angle_min = c.angle_min_rad;
+  scan.angle_max = c.AngleMax();
+  scan.angle_increment = c.angle_increment_rad;
+  scan.range_min = c.range_min_m;
+  scan.range_max = c.range_max_m;
+  scan.time_increment = c.TimeIncrement();
+  scan.scan_time = c.ScanPeriod();
+  scan.stamp = t0_s;
+  const auto n = static_cast<std::size_t>(c.num_beams);
+  scan.ranges.assign(n, kNaN);
+  if (c.enable_intensities) scan.intensities.assign(n, 0.0);
+  out.truth.assign(n, BeamTruth{});
+
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const bool moving = world.HasMovingObstacles();
+  moving_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = t0_s + static_cast<double>(i) * scan.time_increment;
+    if (moving) {
+      moving_.clear();
+      world.AppendMovingObstacles(t, &moving_);
+    }
+    // The beam really leaves at its reported angle plus the calibration error.
+    const double theta = scan.BeamAngle(i) + c.yaw_offset_rad;
+    const Echo echo = CastBeam(world, T_world_lidar_at(t), theta, moving_);
+
+    BeamTruth& truth = out.truth[i];
+    truth.true_range_m = std::isfinite(echo.centre.range_m) ? echo.centre.range_m : kNaN;
+    truth.mixed = echo.mixed;
+    if (echo.centre.primitive != nullptr) {
+      truth.kind = echo.centre.primitive->kind;
+      truth.object_id = echo.centre.primitive->object_id;
+    } else if (echo.centre.floor) {
+      truth.kind = ObjectKind::kFloor;
+    }
+    if (!std::isfinite(echo.range_m)) continue;
+
+    if (c.enable_dropouts) {
+      const SubHit& s = echo.centre;
+      double p = c.dropout_probability + c.dark_dropout_gain * (1.0 - s.reflectivity);
+      if (s.shiny) p += c.shiny_dropout_gain * (1.0 - s.cos_incidence * s.cos_incidence);
+      if (uniform(rng_) < p) continue;
+    }
+    double r = echo.range_m;
+    if (c.enable_range_noise) {
+      r += (c.range_noise_sigma_m + c.range_noise_per_m * r) * gauss(rng_);
+    }
+    if (c.enable_quantisation) r = std::round(r / c.quantisation_m) * c.quantisation_m;
+    if (r < c.range_min_m || r > c.range_max_m) continue;
+    scan.ranges[i] = r;
+    if (c.enable_intensities) {
+      const double noise = 1.0 + c.intensity_noise_rel * gauss(rng_);
+      scan.intensities[i] = std::max(0.0, c.intensity_scale * echo.intensity * noise);
+    }
+  }
+  return out;
+}
+
+}  // namespace shelfdock::sim

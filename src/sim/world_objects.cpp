@@ -1,0 +1,130 @@
+#include "sim/world_objects.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace shelfdock::sim {
+
+namespace {
+std::array<Eigen::Vector2d, 4> BoxCorners(const geometry::Pose2& T_world_box, double length_m,
+                                          double width_m) {
+  const double hl = 0.5 * length_m;
+  const double hw = 0.5 * width_m;
+  return {T_world_box * Eigen::Vector2d(-hl, -hw), T_world_box * Eigen::Vector2d(hl, -hw),
+          T_world_box * Eigen::Vector2d(hl, hw), T_world_box * Eigen::Vector2d(-hl, hw)};
+}
+
+void AppendClosed(const std::array<Eigen::Vector2d, 4>& corners, const Primitive& proto,
+                  std::vector<Primitive>* out) {
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    Primitive p = proto;
+    p.shape = Primitive::Shape::kSegment;
+    p.a = corners[i];
+    p.b = corners[(i + 1) % corners.size()];
+    out->push_back(p);
+  }
+}
+}  // namespace
+
+std::array<Eigen::Vector2d, 4> LegFootprint::Corners() const {
+  return BoxCorners(T_world_leg, length_m, width_m);
+}
+
+std::array<Eigen::Vector2d, 2> Person::LegCentresAt(double t_s) const {
+  const geometry::Pose2 T_world_body = path.PoseAt(t_s);
+  // One gait cycle (two steps) per 2 strides of travel; legs swing in anti-phase.
+  const double cycle_m = std::max(2.0 * stride_m, 1e-3);
+  const double phase =
+      2.0 * std::numbers::pi * (path.start_offset_m + path.speed_mps * t_s) / cycle_m;
+  const double swing = 0.5 * stride_m * std::sin(phase);
+  const double hs = 0.5 * leg_spacing_m;
+  return {T_world_body * Eigen::Vector2d(swing, hs), T_world_body * Eigen::Vector2d(-swing, -hs)};
+}
+
+Box MovingRobot::BoxAt(double t_s) const {
+  Box box;
+  box.T_world_box = path.PoseAt(t_s);
+  box.length_m = length_m;
+  box.width_m = width_m;
+  box.height_m = height_m;
+  box.material = material;
+  return box;
+}
+
+std::vector<LegFootprint> ShelfLegFootprints(const ShelfInstance& shelf) {
+  std::vector<LegFootprint> legs;
+  const auto centres = shelf.model.LegCentres();
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    LegFootprint leg;
+    leg.shelf_id = shelf.id;
+    leg.leg_index = static_cast<int>(i);
+    leg.shape = shelf.model.leg.shape;
+    const Eigen::Vector2d c = shelf.T_world_shelf * centres[i];
+    leg.T_world_leg = geometry::Pose2(c.x(), c.y(), shelf.T_world_shelf.yaw);
+    leg.length_m = shelf.model.leg.length_m;
+    leg.width_m = shelf.model.leg.width_m;
+    legs.push_back(leg);
+  }
+  return legs;
+}
+
+void AppendShelfLegs(const ShelfInstance& shelf, std::vector<Primitive>* out) {
+  Primitive proto;
+  proto.material = shelf.leg_material;
+  proto.kind = ObjectKind::kShelfLeg;
+  proto.object_id = shelf.id;
+  for (const LegFootprint& leg : ShelfLegFootprints(shelf)) {
+    if (leg.shape == geometry::LegShape::kCircle) {
+      Primitive p = proto;
+      p.shape = Primitive::Shape::kCircle;
+      p.a = leg.T_world_leg.translation();
+      p.radius_m = 0.5 * leg.length_m;
+      out->push_back(p);
+    } else {
+      AppendClosed(leg.Corners(), proto, out);
+    }
+  }
+}
+
+void AppendWall(const Wall& wall, int index, std::vector<Primitive>* out) {
+  const std::size_t n = wall.points.size();
+  const std::size_t edges = wall.closed && n > 2 ? n : n - 1;
+  for (std::size_t i = 0; n >= 2 && i < edges; ++i) {
+    Primitive p = Primitive::Segment(wall.points[i], wall.points[(i + 1) % n]);
+    p.height_m = wall.height_m;
+    p.material = wall.material;
+    p.kind = ObjectKind::kWall;
+    p.object_id = index;
+    out->push_back(p);
+  }
+}
+
+void AppendBox(const Box& box, ObjectKind kind, int index, std::vector<Primitive>* out) {
+  Primitive proto;
+  proto.height_m = box.height_m;
+  proto.material = box.material;
+  proto.kind = kind;
+  proto.object_id = index;
+  AppendClosed(BoxCorners(box.T_world_box, box.length_m, box.width_m), proto, out);
+}
+
+void AppendRoundPost(const RoundPost& post, int index, std::vector<Primitive>* out) {
+  Primitive p = Primitive::Circle(post.centre, post.radius_m);
+  p.material = post.material;
+  p.kind = ObjectKind::kPost;
+  p.object_id = index;
+  out->push_back(p);
+}
+
+void AppendPerson(const Person& person, double t_s, int index, std::vector<Primitive>* out) {
+  for (const Eigen::Vector2d& c : person.LegCentresAt(t_s)) {
+    Primitive p = Primitive::Circle(c, person.leg_radius_m);
+    p.height_m = person.height_m;
+    p.material = person.material;
+    p.kind = ObjectKind::kPerson;
+    p.object_id = index;
+    out->push_back(p);
+  }
+}
+
+}  // namespace shelfdock::sim
