@@ -1,0 +1,105 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "geometry/pose2.hpp"
+
+namespace shelfdock::docking {
+
+/// Path planner (path_planner.hpp): a cubic Bezier into a straight final segment.
+struct PlannerConfig {
+  double final_straight_m = 0.9;       ///< [m] straight, shelf-aligned segment before the goal
+  double min_final_straight_m = 0.05;  ///< [m] shortest straight accepted when re-planning close in
+  double max_curvature_1pm = 2.0;      ///< [1/m] curvature bound of the differential drive path
+  double sample_step_m = 0.01;         ///< [m] spacing of the sampled path
+};
+
+/// Path-tracking controller (path_tracker.hpp).
+struct ControllerConfig {
+  double max_speed_mps = 0.45;          ///< [m/s] cruise speed in the docking area (paper: ~0.4)
+  double approach_speed_mps = 0.6;      ///< [m/s] cruise speed during the approach
+  double max_accel_mps2 = 0.5;          ///< [m/s^2]
+  double max_decel_mps2 = 0.4;          ///< [m/s^2] used by the stopping profile
+  double max_yaw_rate_radps = 1.0;      ///< [rad/s]
+  double max_lateral_accel_mps2 = 0.4;  ///< [m/s^2] slows the robot in curves
+  double lateral_settle_m = 0.12;       ///< [m] distance scale over which lateral error decays
+  double creep_speed_mps = 0.015;       ///< [m/s] slowest speed before the final stop
+  double goal_tolerance_m = 0.0005;     ///< [m] stop when this close along the path
+  double max_cross_track_m = 0.25;      ///< [m] farther off the path is a tracking failure
+};
+
+/// Fusion of detections over time (shelf_tracker.hpp).
+struct ShelfTrackerConfig {
+  double gate_xy_m = 0.12;              ///< [m] reject detections jumping farther from the estimate
+  double gate_yaw_rad = 0.12;           ///< [rad]
+  int reinit_after_rejects = 6;         ///< consecutive rejections that restart the estimate
+  double min_sigma_xy_m = 0.004;        ///< [m] floor of a detection's std dev
+  double min_sigma_yaw_rad = 0.006;     ///< [rad]
+  double drift_sigma_xy_per_m = 0.004;  ///< [m/sqrt(m)] growth of odometry error per metre
+  double drift_sigma_yaw_per_m = 0.003;  ///< [rad/sqrt(m)]
+  double preset_sigma_xy_m = 0.3;        ///< [m] prior std dev of the preset pose
+  double preset_sigma_yaw_rad = 0.2;     ///< [rad]
+};
+
+/// Footprint and clearance checks (collision_check.hpp).
+struct SafetyConfig {
+  double robot_length_m = 0.62;       ///< [m] footprint along the robot's x
+  double robot_width_m = 0.52;        ///< [m] footprint along the robot's y
+  double robot_offset_x_m = 0.0;      ///< [m] footprint centre ahead of the base origin
+  double leg_margin_m = 0.05;         ///< [m] required clearance to every leg
+  double obstacle_margin_m = 0.05;    ///< [m] clearance to unknown scan points
+  double obstacle_lookahead_m = 1.2;  ///< [m] path length checked for obstacles
+  double obstacle_wait_s = 3.0;       ///< [s] waiting for a blocked path to clear
+  double leg_exclusion_m = 0.08;      ///< [m] scan points this near an expected leg are the shelf's
+};
+
+/// Code check under the shelf and fine adjustment.
+struct VerifyConfig {
+  int frames = 5;                    ///< camera frames averaged per check
+  int max_missing_frames = 20;       ///< frames without a code before code_not_found
+  double tolerance_xy_m = 0.0025;    ///< [m] accepted offset of the code
+  double tolerance_yaw_rad = 0.004;  ///< [rad]
+  int max_adjust_tries = 3;
+  double backoff_m = 0.12;             ///< [m] reverse this far before a lateral correction
+  double adjust_speed_mps = 0.08;      ///< [m/s]
+  double adjust_yaw_rate_radps = 0.3;  ///< [rad/s]
+  double max_correction_m = 0.05;      ///< [m] larger offsets are not corrected blind
+};
+
+/// The stop-and-recognise baseline.
+struct BaselineConfig {
+  double parking_distance_m = 1.6;  ///< [m] parking spot this far before the preset goal
+  double settle_s = 1.0;            ///< [s] standing still before recognition starts
+  int standing_scans = 5;           ///< scans fused while standing
+};
+
+struct DockingConfig {
+  PlannerConfig planner;
+  ControllerConfig controller;
+  ShelfTrackerConfig tracker;
+  SafetyConfig safety;
+  VerifyConfig verify;
+  BaselineConfig baseline;
+
+  geometry::Pose2 T_base_lidar{0.30, 0.0, 0.0};  ///< LiDAR mounting (nominal)
+  double dock_yaw_offset_rad = 0.0;  ///< robot heading at the goal vs the shelf's long side
+  double entry_distance_m = 4.5;     ///< [m] docking area starts this far from the preset goal
+  double replan_xy_m = 0.004;        ///< [m] goal change that triggers a re-plan
+  double replan_yaw_rad = 0.004;     ///< [rad]
+  int max_replans = 40;
+  double lidar_cutoff_m = 0.45;      ///< [m] remaining path below which the LiDAR is not used
+  double leg_min_range_m = 0.15;     ///< [m] legs nearer the LiDAR than this are not trusted
+  double leg_max_bearing_rad = 2.2;  ///< [rad] legs beyond this bearing are not trusted
+  double must_detect_by_m = 1.2;     ///< [m] remaining path by which the shelf must be found
+  double detection_lost_s = 1.5;     ///< [s] no detection (or no scan) for this long -> lost
+  double scan_timeout_s = 0.5;       ///< [s] no scan at all for this long -> LiDAR dead
+  double lift_timeout_s = 10.0;      ///< [s]
+  double timeout_s = 90.0;           ///< [s] whole attempt
+  double control_period_s = 0.02;    ///< [s] expected Step period (used for stopping)
+};
+
+/// Empty when valid, else "key: requirement" for the first bad value.
+std::optional<std::string> Validate(const DockingConfig& config);
+
+}  // namespace shelfdock::docking
