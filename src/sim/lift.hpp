@@ -12,7 +12,8 @@ class Lift {
   bool Started() const { return started_; }
   /// Fraction of the stroke done at `time_s`, in [0, 1].
   double Progress(double time_s) const;
-  bool Done(double time_s) const { return started_ && Progress(time_s) >= 1.0; }
+  /// Done once the duration has elapsed (to a nanosecond, so summed control steps count).
+  bool Done(double time_s) const;
 
  private:
   double duration_s_;
