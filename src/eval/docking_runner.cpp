@@ -1,0 +1,250 @@
+#include "eval/docking_runner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "docking/path_planner.hpp"
+#include "docking/path_tracker.hpp"
+#include "geometry/angle.hpp"
+#include "perception/detector.hpp"
+#include "sim/lidar.hpp"
+#include "sim/world.hpp"
+
+namespace shelfdock::eval {
+namespace {
+
+using geometry::Pose2;
+
+double BoxDistance(const Eigen::Vector2d& p, double half_x, double half_y) {
+  const Eigen::Vector2d d(std::abs(p.x()) - half_x, std::abs(p.y()) - half_y);
+  return d.cwiseMax(0.0).norm() + std::min(std::max(d.x(), d.y()), 0.0);
+}
+
+const geometry::ShelfModel* FindModel(const std::vector<geometry::ShelfModel>& models,
+                                      const std::string& name) {
+  for (const auto& m : models) {
+    if (m.name == name) return &m;
+  }
+  return nullptr;
+}
+
+/// The shelf whose leg rectangle contains the robot's centre (the one the camera looks at).
+std::optional<sim::ShelfInstance> ShelfAbove(const sim::World& world, const Pose2& T_world_base) {
+  for (const sim::ShelfInstance& s : world.shelves()) {
+    const Pose2 local = s.T_world_shelf.inverse() * T_world_base;
+    if (std::abs(local.x) < 0.5 * s.model.length_m && std::abs(local.y) < 0.5 * s.model.width_m) {
+      return s;
+    }
+  }
+  return std::nullopt;
+}
+
+/// Error of the robot against the true shelf centre in the goal frame (which end it entered
+/// from is the branch of yaw_offset or yaw_offset + pi nearest the robot's heading).
+PoseError ErrorInShelfFrame(const Pose2& T_world_base, const Pose2& T_world_shelf,
+                            double yaw_offset_rad) {
+  const Pose2 T_shelf_base = T_world_shelf.inverse() * T_world_base;
+  Pose2 T_shelf_goal(0.0, 0.0, yaw_offset_rad);
+  if (std::abs(geometry::AngleDiff(T_shelf_base.yaw, T_shelf_goal.yaw)) > 0.5 * std::numbers::pi) {
+    T_shelf_goal = Pose2(0.0, 0.0, yaw_offset_rad + std::numbers::pi);
+  }
+  const Pose2 e = T_shelf_goal.inverse() * T_shelf_base;
+  return {e.x, e.y, e.yaw, true};
+}
+
+}  // namespace
+
+double FootprintLegDistance(const Pose2& T_world_base, double length_m, double width_m,
+                            const sim::LegFootprint& leg) {
+  // Two convex boxes that do not overlap are closest at a vertex of one of them.
+  double d = std::numeric_limits<double>::infinity();
+  const Pose2 T_base_world = T_world_base.inverse();
+  for (const Eigen::Vector2d& c : leg.Corners()) {
+    d = std::min(d, BoxDistance(T_base_world * c, 0.5 * length_m, 0.5 * width_m));
+  }
+  const Pose2 T_leg_world = leg.T_world_leg.inverse();
+  for (double sx : {-0.5, 0.5}) {
+    for (double sy : {-0.5, 0.5}) {
+      const Eigen::Vector2d corner = T_world_base * Eigen::Vector2d(sx * length_m, sy * width_m);
+      d = std::min(d, BoxDistance(T_leg_world * corner, 0.5 * leg.length_m, 0.5 * leg.width_m));
+    }
+  }
+  return d;
+}
+
+DockingRun RunDocking(const sim::Scenario& scenario,
+                      const std::vector<geometry::ShelfModel>& models, docking::Method method,
+                      std::uint64_t seed, const RunConfig& config) {
+  DockingRun run;
+  run.method = method;
+  run.seed = seed;
+
+  // What the robot is told.
+  docking::DockingTask task;
+  task.shelf_id = scenario.target_shelf_id;
+  const sim::ScenarioShelf* target = scenario.FindShelf(scenario.target_shelf_id);
+  task.T_map_shelf_preset = scenario.PresetPose(scenario.target_shelf_id, seed).value_or(Pose2());
+  if (target != nullptr) {
+    if (const geometry::ShelfModel* m = FindModel(models, target->model_name)) task.model = *m;
+  }
+  const std::optional<sim::ShelfInstance> true_shelf =
+      scenario.world.Shelf(scenario.target_shelf_id);
+
+  docking::DockingConfig dcfg = config.docking;
+  dcfg.safety.robot_length_m = config.robot.footprint_length_m;
+  dcfg.safety.robot_width_m = config.robot.footprint_width_m;
+  dcfg.control_period_s = 1.0 / config.robot.control_rate_hz;
+
+  const perception::Detector detector(models, config.detector);
+  docking::Docker docker(dcfg, task, method,
+                         [&detector](const std::vector<perception::ScanPoint>& points,
+                                     double increment, const std::optional<Pose2>& preset) {
+                           return detector.DetectPoints(points, increment, preset);
+                         });
+  perception::MarkerDetector marker_detector(config.marker);
+
+  sim::DiffDriveRobot robot(config.robot, scenario.T_map_robot_start, seed);
+  sim::Lidar lidar(config.lidar, seed * 7919 + 1);
+  const Pose2 T_base_lidar = dcfg.T_base_lidar;
+  const double dt = dcfg.control_period_s;
+  const double scan_period = config.lidar.ScanPeriod();
+  double next_scan_t0 = robot.time_s();
+  double next_camera_t = robot.time_s();
+  int camera_frames = 0;
+  int last_path_version = 0;
+  bool verify_seen = false;
+  const std::vector<sim::LegFootprint> legs = scenario.world.LegFootprints();
+  geometry::LaserScan scan;
+
+  while (!docker.done() && robot.time_s() < config.max_sim_time_s) {
+    const double t = robot.time_s();
+    docking::Observations obs;
+    obs.t_s = t;
+    obs.T_odom_base = robot.T_odom_base();
+    obs.T_map_base_estimate = robot.T_map_base_estimate();
+    obs.lift_done = robot.LiftDone();
+
+    // A scan started at t0 is complete (and delivered) one period later.
+    bool have_scan = false;
+    if (t + 1e-9 >= next_scan_t0 + scan_period) {
+      const double t0 = next_scan_t0;
+      next_scan_t0 += scan_period;
+      const double since_entry = t - docker.docking_start_time();
+      const bool blackout = config.blackout_start_s >= 0.0 && std::isfinite(since_entry) &&
+                            since_entry >= config.blackout_start_s &&
+                            since_entry < config.blackout_start_s + config.blackout_duration_s;
+      if (!blackout) {
+        scan = lidar.Scan(
+            scenario.world,
+            [&robot, &T_base_lidar](double ti) { return robot.T_world_base_at(ti) * T_base_lidar; },
+            t0);
+        obs.scan = &scan;
+        have_scan = true;
+      }
+    }
+    // The camera, when on, at its frame rate.
+    if (docker.phase() == docking::Phase::kVerify && t + 1e-9 >= next_camera_t) {
+      next_camera_t = t + 1.0 / config.camera_rate_hz;
+      obs.camera_frame = true;
+      if (const auto above = ShelfAbove(scenario.world, robot.T_world_base())) {
+        const geometry::GrayImage image = sim::RenderMarker(
+            config.camera, above->id, sim::TagInCamera(robot.T_world_base(), above->T_world_shelf),
+            seed * 1000003 + static_cast<std::uint64_t>(++camera_frames));
+        obs.marker = marker_detector.Detect(image, config.camera.camera);
+      }
+    }
+
+    const docking::Command cmd = docker.Step(obs);
+
+    if (!verify_seen && docker.phase() == docking::Phase::kVerify && true_shelf) {
+      verify_seen = true;
+      run.error_before_check = ErrorInShelfFrame(robot.T_world_base(), true_shelf->T_world_shelf,
+                                                 dcfg.dock_yaw_offset_rad);
+    }
+    if (cmd.start_lift) {
+      robot.StartLift();
+      if (true_shelf) {
+        run.error_after_check = ErrorInShelfFrame(robot.T_world_base(), true_shelf->T_world_shelf,
+                                                  dcfg.dock_yaw_offset_rad);
+      }
+    }
+    for (const sim::LegFootprint& leg : legs) {
+      run.min_leg_clearance_m =
+          std::min(run.min_leg_clearance_m,
+                   FootprintLegDistance(robot.T_world_base(), config.robot.footprint_length_m,
+                                        config.robot.footprint_width_m, leg));
+    }
+    if (config.record) {
+      RecordFrame f;
+      f.t_s = t;
+      f.phase = std::string(docking::ToString(docker.phase()));
+      f.T_world_base_true = robot.T_world_base();
+      f.T_odom_base = obs.T_odom_base;
+      f.T_map_base_estimate = obs.T_map_base_estimate;
+      f.v_cmd = cmd.velocity.v_mps;
+      f.w_cmd = cmd.velocity.w_radps;
+      const Pose2 T_world_odom = robot.T_world_base() * obs.T_odom_base.inverse();
+      if (have_scan) {
+        const Pose2 T_world_lidar = robot.T_world_base() * T_base_lidar;
+        for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+          const double r = scan.ranges[i];
+          if (!std::isfinite(r)) continue;
+          const double a = scan.BeamAngle(i);
+          f.scan_world.push_back(T_world_lidar * Eigen::Vector2d(r * std::cos(a), r * std::sin(a)));
+        }
+      }
+      if (docker.last_detection_odom())
+        f.detection_world = T_world_odom * *docker.last_detection_odom();
+      if (docker.shelf_tracker().has_detection()) {
+        f.shelf_estimate_world = T_world_odom * docker.shelf_tracker().estimate();
+      }
+      if (docker.path_version() != last_path_version) {
+        const Pose2 T_world_frame = docker.path_in_odom()
+                                        ? T_world_odom
+                                        : robot.T_world_base() * obs.T_map_base_estimate.inverse();
+        for (const auto& p : docker.path().points) f.path_world.push_back(T_world_frame * p.pose);
+      }
+      f.events = cmd.events;
+      run.record.push_back(std::move(f));
+    }
+    last_path_version = docker.path_version();
+    robot.Step(cmd.velocity.v_mps, cmd.velocity.w_radps, dt);
+  }
+
+  run.outcome = docker.done() ? docker.outcome()
+                              : docking::Outcome{docking::OutcomeCode::kTimeout,
+                                                 "the simulation ran out of time"};
+  const double start =
+      std::isfinite(docker.docking_start_time()) ? docker.docking_start_time() : 0.0;
+  run.time_s = robot.time_s() - start;
+  run.replans = docker.replans();
+  run.detections = docker.detections();
+  return run;
+}
+
+double PerfectKnowledgeTime(const sim::Scenario& scenario, const RunConfig& config) {
+  const std::optional<sim::ShelfInstance> shelf = scenario.world.Shelf(scenario.target_shelf_id);
+  if (!shelf) return std::numeric_limits<double>::quiet_NaN();
+  sim::DiffDriveConfig robot_cfg = config.robot;
+  robot_cfg.odometry = {};
+  sim::DiffDriveRobot robot(robot_cfg, scenario.T_map_robot_start, 0);
+  Pose2 goal = shelf->T_world_shelf * Pose2(0.0, 0.0, config.docking.dock_yaw_offset_rad);
+  if ((goal.inverse() * robot.T_world_base()).x > 0.0)
+    goal = goal * Pose2(0.0, 0.0, std::numbers::pi);
+  const docking::PlanResult plan =
+      docking::PlanDockingPath(robot.T_world_base(), goal, config.docking.planner);
+  if (!plan.ok) return std::numeric_limits<double>::quiet_NaN();
+  docking::PathTracker tracker(config.docking.controller);
+  tracker.SetPath(plan.path, config.docking.controller.max_speed_mps, 0.0, 0.0);
+  const double dt = 1.0 / robot_cfg.control_rate_hz;
+  while (robot.time_s() < config.max_sim_time_s) {
+    const docking::TrackingStatus s = tracker.Update(robot.T_world_base(), dt);
+    if (s.reached) break;
+    robot.Step(s.command.v_mps, s.command.w_radps, dt);
+  }
+  return robot.time_s() + robot_cfg.lift_duration_s;
+}
+
+}  // namespace shelfdock::eval

@@ -1,0 +1,89 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "docking/docker.hpp"
+#include "docking/docking_config.hpp"
+#include "docking/path.hpp"
+#include "perception/detector_config.hpp"
+#include "perception/marker_detector.hpp"
+#include "sim/diff_drive_robot.hpp"
+#include "sim/lidar_config.hpp"
+#include "sim/marker_camera.hpp"
+#include "sim/scenario.hpp"
+
+namespace shelfdock::eval {
+
+/// Everything a closed-loop docking run needs besides the scenario.
+struct RunConfig {
+  docking::DockingConfig docking;
+  sim::DiffDriveConfig robot;
+  sim::LidarConfig lidar;
+  sim::CameraConfig camera;
+  perception::DetectorConfig detector;
+  perception::MarkerDetectorConfig marker;
+  double camera_rate_hz = 15.0;   ///< [Hz] upward camera frames while it is on
+  double max_sim_time_s = 120.0;  ///< [s] hard stop of the simulation loop
+  /// LiDAR blackout (a failure injection): scans stop arriving this long after the docking
+  /// area's entry, for blackout_duration_s. Negative start: no blackout.
+  double blackout_start_s = -1.0;
+  double blackout_duration_s = 1e9;
+  bool record = false;  ///< keep one RecordFrame per control step
+};
+
+/// The robot's final pose against the TRUE shelf centre in the shelf's goal frame.
+struct PoseError {
+  double x = 0.0, y = 0.0, yaw = 0.0;  ///< [m, m, rad]
+  bool valid = false;                  ///< false when that stage was never reached
+};
+
+/// One control step, for replay. Poses in the world (= map) frame. Things the robot keeps in
+/// its odometry frame (detections, fused shelf, path) are drawn where the robot believes them,
+/// i.e. mapped with the TRUE T_world_odom of that instant.
+struct RecordFrame {
+  double t_s = 0.0;
+  std::string phase;
+  geometry::Pose2 T_world_base_true;
+  geometry::Pose2 T_odom_base;
+  geometry::Pose2 T_map_base_estimate;
+  double v_cmd = 0.0, w_cmd = 0.0;
+  std::vector<Eigen::Vector2d> scan_world;  ///< this step's scan (true pose), empty if none
+  std::optional<geometry::Pose2> detection_world;
+  std::optional<geometry::Pose2> shelf_estimate_world;
+  std::vector<geometry::Pose2> path_world;  ///< only when the path changed this step
+  std::vector<std::string> events;
+};
+
+struct DockingRun {
+  docking::Outcome outcome;
+  docking::Method method = docking::Method::kContinuous;
+  std::uint64_t seed = 0;
+  double time_s = 0.0;  ///< [s] docking area entry to end of lift (or to the stop on failure)
+  PoseError error_before_check;
+  PoseError error_after_check;
+  int replans = 0;
+  int detections = 0;
+  double min_leg_clearance_m = 1e9;  ///< [m] true footprint to true legs over the whole run
+  std::vector<RecordFrame> record;
+};
+
+/// Runs one docking in the simulator: world, LiDAR (motion-skewed scans), robot (limits,
+/// odometry, localisation), upward camera and code detector around a docking::Docker that sees
+/// only the robot's sensors. The target shelf, its model and preset come from the scenario.
+DockingRun RunDocking(const sim::Scenario& scenario,
+                      const std::vector<geometry::ShelfModel>& models, docking::Method method,
+                      std::uint64_t seed, const RunConfig& config);
+
+/// Docking time of a robot that knows the true shelf pose: one plan from the true start to the
+/// true goal, tracked with the same limits, plus the lift; no detection, no code check.
+double PerfectKnowledgeTime(const sim::Scenario& scenario, const RunConfig& config);
+
+/// Distance between the robot's footprint at T_world_base and a leg (negative: overlap).
+double FootprintLegDistance(const geometry::Pose2& T_world_base, double length_m, double width_m,
+                            const sim::LegFootprint& leg);
+
+}  // namespace shelfdock::eval
