@@ -1,0 +1,65 @@
+#include "perception/detector_config.hpp"
+
+#include <numbers>
+
+namespace shelfdock::perception {
+namespace {
+
+// Collects the first failed rule; later checks are skipped once one failed.
+class Checker {
+ public:
+  void Check(bool ok, const char* key, const char* requirement) {
+    if (!ok && !violation_) violation_ = ConfigViolation{key, requirement};
+  }
+  std::optional<ConfigViolation> Result() const { return violation_; }
+
+ private:
+  std::optional<ConfigViolation> violation_;
+};
+
+}  // namespace
+
+std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
+  Checker k;
+  const auto& p = c.preprocess;
+  k.Check(p.roi_gamma > 0.5, "preprocess.roi_gamma", "> 0.5 (the ROI must reach the legs)");
+  k.Check(p.cluster_gap_m > 0.0, "preprocess.cluster_gap_m", "> 0");
+  k.Check(p.cluster_gap_beams >= 0.0, "preprocess.cluster_gap_beams", ">= 0");
+  k.Check(p.trailing_min_angle_rad >= 0.0 && p.trailing_min_angle_rad < std::numbers::pi / 2,
+          "preprocess.trailing_min_angle_rad", "in [0, pi/2)");
+  k.Check(p.trailing_min_jump_m >= 0.0, "preprocess.trailing_min_jump_m", ">= 0");
+  k.Check(p.leg_extent_margin_m >= 0.0, "preprocess.leg_extent_margin_m", ">= 0");
+  k.Check(p.min_points >= 1, "preprocess.min_points", ">= 1");
+  k.Check(p.min_point_fraction >= 0.0 && p.min_point_fraction <= 1.0,
+          "preprocess.min_point_fraction", "in [0, 1]");
+
+  const auto& s = c.leg_search;
+  k.Check(s.pair_tolerance_m > 0.0, "leg_search.pair_tolerance_m", "> 0");
+  k.Check(s.pythagoras_tolerance_m > 0.0, "leg_search.pythagoras_tolerance_m", "> 0");
+  k.Check(s.fourth_leg_radius_m > 0.0, "leg_search.fourth_leg_radius_m", "> 0");
+  k.Check(s.max_leg_sets >= 1, "leg_search.max_leg_sets", ">= 1");
+
+  const auto& m = c.model_match;
+  k.Check(m.gamma_L_m > 0.0, "model_match.gamma_L_m", "> 0");
+  k.Check(m.gamma_W_m > 0.0, "model_match.gamma_W_m", "> 0");
+  k.Check(m.gamma_sum_m > 0.0, "model_match.gamma_sum_m", "> 0");
+  k.Check(m.lambda_m >= 0.0, "model_match.lambda_m", ">= 0");
+
+  const auto& l = c.leg_fit;
+  k.Check(l.loss_scale_m > 0.0, "leg_fit.loss_scale_m", "> 0");
+  k.Check(l.prior_weight >= 0.0, "leg_fit.prior_weight", ">= 0");
+  k.Check(l.pca_min_points >= 2, "leg_fit.pca_min_points", ">= 2");
+  k.Check(l.pca_min_anisotropy >= 1.0, "leg_fit.pca_min_anisotropy", ">= 1");
+  k.Check(l.max_iterations >= 1, "leg_fit.max_iterations", ">= 1");
+
+  const auto& f = c.shelf_fit;
+  k.Check(f.loss_scale_m > 0.0, "shelf_fit.loss_scale_m", "> 0");
+  k.Check(f.max_iterations >= 1, "shelf_fit.max_iterations", ">= 1");
+  k.Check(f.min_leg_sigma_m > 0.0, "shelf_fit.min_leg_sigma_m", "> 0");
+  k.Check(f.max_rms_m > 0.0, "shelf_fit.max_rms_m", "> 0");
+  k.Check(f.interior_margin_m >= 0.0, "shelf_fit.interior_margin_m", ">= 0");
+  k.Check(f.max_interior_points >= -1, "shelf_fit.max_interior_points", ">= -1 (-1: off)");
+  return k.Result();
+}
+
+}  // namespace shelfdock::perception

@@ -1,0 +1,76 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace shelfdock::perception {
+
+/// Paper 3.1: ranges to points, region of interest, clustering, trailing points, size screening.
+struct PreprocessConfig {
+  double roi_gamma = 0.75;  ///< [-] ROI radius around the preset = roi_gamma * R (R: longest
+                            ///< model diagonal); the paper's gamma. Must exceed 0.5 to hold legs.
+  double cluster_gap_m = 0.05;     ///< [m] break distance between consecutive points at range 0
+  double cluster_gap_beams = 2.0;  ///< [-] plus this many beam spacings at the point's range
+  double trailing_min_angle_rad = 0.17;  ///< [rad] Eq. 1: beta below this marks a trailing point
+  double trailing_min_jump_m = 0.04;     ///< [m] depth jumps below this are noise, not trailing
+  double leg_extent_margin_m = 0.04;     ///< [m] a leg cluster may exceed the leg diagonal by this
+  int min_points = 1;                    ///< [-] fewest points of a leg cluster at any range
+  double min_point_fraction = 0.3;       ///< [-] of the beams expected across the smallest leg
+};
+
+/// Paper 3.2: pruned rectangle / right-triangle search over cluster centres.
+struct LegSearchConfig {
+  double pair_tolerance_m = 0.06;        ///< [m] a pair must fit a model side or diagonal
+  double pythagoras_tolerance_m = 0.06;  ///< [m] |hypotenuse - sqrt(a^2 + b^2)| of a triangle
+  double fourth_leg_radius_m = 0.08;     ///< [m] search radius around the predicted 4th leg
+  bool allow_three_legs = true;          ///< accept right triangles (one leg hidden)
+  int max_leg_sets = 500;                ///< [-] cap on sets kept (pathological clutter)
+};
+
+/// Paper 3.2, Eq. 2: screening of points-model pairs.
+struct ModelMatchConfig {
+  double gamma_L_m = 0.05;    ///< [m] err_L threshold (long side)
+  double gamma_W_m = 0.05;    ///< [m] err_W threshold (short side)
+  double gamma_sum_m = 0.07;  ///< [m] err_sum threshold
+  double lambda_m = 0.03;     ///< [m] keep pairs whose err_sum is within this of the best
+};
+
+/// Paper 3.3: leg centres by PCA and nonlinear least squares.
+struct LegFitConfig {
+  double loss_scale_m = 0.015;     ///< [m] Huber scale of the point residuals
+  double prior_weight = 0.1;       ///< [-] weak pull to the bias-corrected centroid (keeps a
+                                   ///< single visible face well posed along the face)
+  int pca_min_points = 6;          ///< [-] fewer points: leg axes from the shelf edge
+  double pca_min_anisotropy = 20;  ///< [-] eigenvalue ratio for a PCA direction to be trusted
+  int max_iterations = 20;         ///< [-] solver iterations
+};
+
+/// Paper 3.4: shelf centre and heading by nonlinear least squares (Eq. 8-11).
+struct ShelfFitConfig {
+  double loss_scale_m = 0.02;       ///< [m] Cauchy scale of the leg residuals
+  int max_iterations = 25;          ///< [-] solver iterations
+  double min_leg_sigma_m = 0.003;   ///< [m] floor of the per-leg std used for the covariance
+  double max_rms_m = 0.03;          ///< [m] fitted legs farther (RMS) from the model: rejected
+  double interior_margin_m = 0.06;  ///< [m] shrink of the footprint for the free-space check
+  int max_interior_points = 3;      ///< [-] scan points allowed inside the footprint; -1: off
+};
+
+struct DetectorConfig {
+  PreprocessConfig preprocess;
+  LegSearchConfig leg_search;
+  ModelMatchConfig model_match;
+  LegFitConfig leg_fit;
+  ShelfFitConfig shelf_fit;
+};
+
+/// An impossible parameter: its dotted key (e.g. `preprocess.cluster_gap_m`) and the rule.
+struct ConfigViolation {
+  std::string key;
+  std::string requirement;
+};
+
+/// The first impossible value in `config`, if any. The single place the rules live: the
+/// Detector constructor throws on it and the YAML loader reports it with the file name.
+std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& config);
+
+}  // namespace shelfdock::perception

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/shelf_model.hpp"
+#include "perception/detector_config.hpp"
+#include "perception/preprocess.hpp"
+
+namespace shelfdock::perception {
+
+struct LegFitResult {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< [m] fitted leg centre, lidar frame
+  double axis_yaw = 0.0;       ///< [rad] leg section's x axis (G_h side) used by the fit
+  bool axis_from_pca = false;  ///< the axis came from the points' PCA, not the hint
+  double rms_m = 0.0;          ///< [m] RMS point-to-surface distance at the solution
+  bool converged = false;
+};
+
+/// Main direction (Eq. 3-4: centroid and scatter matrix, largest eigenvector) and the ratio of
+/// the eigenvalues (>= 1; large for points along one face).
+struct PcaDirection {
+  double yaw = 0.0;         ///< [rad]
+  double anisotropy = 1.0;  ///< [-] largest / smallest eigenvalue
+};
+PcaDirection PrincipalDirection(const std::vector<ScanPoint>& points);
+
+/// Paper 3.3: the leg centre from its points by nonlinear least squares (Ceres). Round legs use
+/// the residual |p - c| - r; rectangular legs the distance of each point to the nearest face of
+/// the G_h x G_w section that faces the sensor (at the origin). The section's axes come from
+/// the PCA when the points show a clear face, else from `axis_yaw_hint` (the shelf edge: legs
+/// are mounted square to the frame). Unlike the bare centroid, the fit is not pulled toward the
+/// sensor by the leg's half depth.
+LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegModel& leg,
+                    double axis_yaw_hint, const LegFitConfig& config);
+
+}  // namespace shelfdock::perception

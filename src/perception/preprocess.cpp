@@ -1,0 +1,152 @@
+#include "perception/preprocess.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shelfdock::perception {
+namespace {
+
+void UpdateShape(Cluster& c) {
+  c.centroid.setZero();
+  c.extent_m = 0.0;
+  if (c.points.empty()) return;
+  for (const auto& q : c.points) {
+    c.centroid += q.p;
+    c.extent_m = std::max(c.extent_m, (q.p - c.points.front().p).norm());
+  }
+  c.centroid /= static_cast<double>(c.points.size());
+}
+
+// Largest visible extent of a leg: the section's diagonal (a circle's diameter).
+double LegExtent(const geometry::LegModel& leg) {
+  return leg.shape == geometry::LegShape::kCircle ? leg.length_m
+                                                  : std::hypot(leg.length_m, leg.width_m);
+}
+
+}  // namespace
+
+std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan) {
+  std::vector<ScanPoint> out;
+  out.reserve(scan.ranges.size());
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double r = scan.ranges[i];
+    if (!std::isfinite(r) || r <= 0.0 || r < scan.range_min || r > scan.range_max) continue;
+    const double a = scan.BeamAngle(i);
+    out.push_back({Eigen::Vector2d(r * std::cos(a), r * std::sin(a)), r, a, static_cast<int>(i)});
+  }
+  return out;
+}
+
+std::vector<Cluster> ClusterPoints(const std::vector<ScanPoint>& points, double angle_increment_rad,
+                                   const PreprocessConfig& config) {
+  std::vector<Cluster> clusters;
+  const double alpha = std::abs(angle_increment_rad);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    bool join = false;
+    if (i > 0) {
+      const ScanPoint& a = points[i - 1];
+      const ScanPoint& b = points[i];
+      // Neighbouring returns on one surface are about r * alpha apart (more at grazing
+      // incidence); dropped beams in between widen the allowed gap proportionally.
+      const int steps = std::max(1, std::abs(b.beam - a.beam));
+      const double r = std::min(a.range, b.range);
+      const double gap =
+          config.cluster_gap_m + config.cluster_gap_beams * r * alpha * static_cast<double>(steps);
+      join = (b.p - a.p).norm() <= gap;
+    }
+    if (!join) clusters.emplace_back();
+    clusters.back().points.push_back(points[i]);
+  }
+  for (auto& c : clusters) UpdateShape(c);
+  return clusters;
+}
+
+double TrailingAngle(double range_far_m, double range_near_m, double alpha_rad) {
+  return std::atan2(range_near_m * std::sin(alpha_rad),
+                    range_far_m - range_near_m * std::cos(alpha_rad));
+}
+
+int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad,
+                         const PreprocessConfig& config) {
+  if (pts.size() < 2) return 0;
+  const double alpha = std::abs(angle_increment_rad);
+  std::vector<bool> drop(pts.size(), false);
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    if (std::abs(pts[i + 1].beam - pts[i].beam) > 2) continue;  // not neighbours
+    const bool first_far = pts[i].range > pts[i + 1].range;
+    const ScanPoint& far = first_far ? pts[i] : pts[i + 1];
+    const ScanPoint& near = first_far ? pts[i + 1] : pts[i];
+    // Eq. 1 alone would flag range noise at short range, where neighbouring beams are only
+    // millimetres apart; a mixed point also needs a depth jump larger than the noise.
+    if (far.range - near.range < config.trailing_min_jump_m) continue;
+    const double steps = std::max(1, std::abs(far.beam - near.beam));
+    if (TrailingAngle(far.range, near.range, alpha * steps) < config.trailing_min_angle_rad) {
+      drop[first_far ? i : i + 1] = true;
+    }
+  }
+  int removed = 0;
+  std::vector<ScanPoint> kept;
+  kept.reserve(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (drop[i]) {
+      ++removed;
+    } else {
+      kept.push_back(pts[i]);
+    }
+  }
+  pts = std::move(kept);
+  return removed;
+}
+
+bool FitsLegSize(const Cluster& cluster, double angle_increment_rad,
+                 const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config) {
+  if (cluster.points.empty() || models.empty()) return false;
+  double max_extent = 0.0;
+  double min_width = models.front().leg.width_m;
+  for (const auto& m : models) {
+    max_extent = std::max(max_extent, LegExtent(m.leg));
+    min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
+  }
+  if (cluster.extent_m > max_extent + config.leg_extent_margin_m) return false;
+  // Beams expected across the smallest leg at this range: a short-range cluster of one or two
+  // points is noise or a mixed point, not a leg.
+  const double range = cluster.centroid.norm();
+  const double spacing = std::max(range * std::abs(angle_increment_rad), 1e-6);
+  const double expected = min_width / spacing;
+  const int needed = std::max(config.min_points,
+                              static_cast<int>(std::floor(config.min_point_fraction * expected)));
+  return static_cast<int>(cluster.points.size()) >= needed;
+}
+
+PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_increment_rad,
+                            const std::optional<geometry::Pose2>& T_lidar_preset,
+                            const std::vector<geometry::ShelfModel>& models,
+                            const PreprocessConfig& config) {
+  PreprocessOutput out;
+  double longest_diagonal = 0.0;
+  for (const auto& m : models) longest_diagonal = std::max(longest_diagonal, m.Diagonal());
+  const double roi_radius = config.roi_gamma * longest_diagonal;
+
+  // The paper filters trailing points inside each cluster. A mixed point sits between a leg
+  // and the background, usually farther from both than the break distance, so it would form a
+  // cluster of its own and escape that test: Eq. 1 is applied to beam neighbours before
+  // clustering instead (the leg's own point is the near one and is kept).
+  std::vector<ScanPoint> kept = points;
+  out.trailing_removed = RemoveTrailingPoints(kept, angle_increment_rad, config);
+
+  // Clustering runs on all points and the ROI is applied to whole clusters: cutting points at
+  // the ROI circle first would turn the clipped end of a wall into a leg-sized fragment.
+  for (Cluster& c : ClusterPoints(kept, angle_increment_rad, config)) {
+    if (T_lidar_preset && (c.centroid - T_lidar_preset->translation()).norm() > roi_radius) {
+      continue;
+    }
+    ++out.clusters;
+    out.roi_points += static_cast<int>(c.points.size());
+    if (FitsLegSize(c, angle_increment_rad, models, config)) {
+      out.candidates.push_back(std::move(c));
+    }
+  }
+  return out;
+}
+
+}  // namespace shelfdock::perception

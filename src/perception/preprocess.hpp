@@ -1,0 +1,66 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/laser_scan.hpp"
+#include "geometry/pose2.hpp"
+#include "geometry/shelf_model.hpp"
+#include "perception/detector_config.hpp"
+
+namespace shelfdock::perception {
+
+/// One valid return, in the scan's frame (`lidar`, sensor at the origin).
+struct ScanPoint {
+  Eigen::Vector2d p = Eigen::Vector2d::Zero();  ///< [m] position, lidar frame
+  double range = 0.0;                           ///< [m]
+  double angle = 0.0;                           ///< [rad] beam bearing
+  int beam = 0;                                 ///< index in the scan
+};
+
+/// Consecutive points of one object.
+struct Cluster {
+  std::vector<ScanPoint> points;                       ///< beam order
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();  ///< [m] mean of the points (Eq. 3)
+  double extent_m = 0.0;  ///< [m] largest distance of a point from the first one
+};
+
+struct PreprocessOutput {
+  std::vector<Cluster> candidates;  ///< clusters that fit a leg of some model
+  int roi_points = 0;               ///< points in clusters inside the ROI
+  int clusters = 0;                 ///< clusters inside the ROI, before screening
+  int trailing_removed = 0;         ///< points removed by the Eq. 1 filter
+};
+
+/// Ranges to points, skipping NaN, infinite, zero and out-of-[range_min, range_max] returns.
+std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan);
+
+/// Splits points (beam order) where the gap exceeds the range-adaptive break distance
+/// cluster_gap_m + cluster_gap_beams * r * |angle_increment| per beam step.
+std::vector<Cluster> ClusterPoints(const std::vector<ScanPoint>& points, double angle_increment_rad,
+                                   const PreprocessConfig& config);
+
+/// Eq. 1: the angle beta at the farther point F between the ray back to the sensor and the
+/// segment to its neighbour N, beta = atan(|ON| sin(alpha) / (|OF| - |ON| cos(alpha))).
+double TrailingAngle(double range_far_m, double range_near_m, double alpha_rad);
+
+/// Removes trailing (mixed) points from points in beam order: of two neighbouring beams whose
+/// depth jump exceeds the noise and whose Eq. 1 angle beta is too small, the farther point is
+/// dropped. Returns how many were removed.
+int RemoveTrailingPoints(std::vector<ScanPoint>& points, double angle_increment_rad,
+                         const PreprocessConfig& config);
+
+/// True when the cluster's extent and point count fit a leg of some model at its range.
+bool FitsLegSize(const Cluster& cluster, double angle_increment_rad,
+                 const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config);
+
+/// The whole of paper 3.1. With a preset shelf pose, only clusters whose centroid lies within
+/// roi_gamma * R of the preset centre are kept.
+PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_increment_rad,
+                            const std::optional<geometry::Pose2>& T_lidar_preset,
+                            const std::vector<geometry::ShelfModel>& models,
+                            const PreprocessConfig& config);
+
+}  // namespace shelfdock::perception

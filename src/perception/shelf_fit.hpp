@@ -1,0 +1,36 @@
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "geometry/pose2.hpp"
+#include "geometry/shelf_model.hpp"
+#include "perception/detector_config.hpp"
+
+namespace shelfdock::perception {
+
+struct ShelfFitResult {
+  geometry::Pose2 T_lidar_shelf;  ///< centre and heading (x along the long side; pi-ambiguous)
+  double cost = 0.0;              ///< [m^2] final robustified cost, 0.5 sum rho(|r|^2)
+  double rms_m = 0.0;             ///< [m] RMS distance of the legs from the fitted corners
+  double length_m = 0.0;          ///< [m] mean long edge between the fitted leg centres
+  double width_m = 0.0;           ///< [m] mean short edge between the fitted leg centres
+  int legs_used = 0;              ///< 3 or 4
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< of (x, y, yaw)
+  bool converged = false;
+};
+
+/// Paper 3.4: the shelf pose C = (c_x, c_y, c_alpha) from 3 or 4 fitted leg centres (cyclic
+/// order as in LegSet; legs[3] unused when count == 3). Each leg is paired with the model corner
+/// u = C (+-L/2, +-W/2) of Eq. 8-9 nearest to it under the initial pose (the legs' mean, or the
+/// hypotenuse midpoint for 3 legs, and the direction of a long edge), then Ceres minimises
+/// sum rho(|leg - u|^2) with a Cauchy loss, the heading on a wrapped-angle manifold.
+/// The covariance is (J^T J)^-1 scaled by the residual variance (floored by min_leg_sigma_m).
+/// nullopt when the legs cannot be paired one-to-one with corners.
+std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& legs, int count,
+                                       const geometry::ShelfModel& model,
+                                       const ShelfFitConfig& config);
+
+}  // namespace shelfdock::perception
