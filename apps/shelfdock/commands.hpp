@@ -13,5 +13,7 @@ inline constexpr int kExitBadInput = 2;  ///< bad input: file, field or paramete
 /// callbacks may throw io::InputError; main turns that into kExitBadInput.
 void AddDetectCommand(CLI::App& app, int* exit_code);
 void AddBagCommand(CLI::App& app, int* exit_code);
+void AddEvalRealCommand(CLI::App& app, int* exit_code);
+void AddSimulateCommand(CLI::App& app, int* exit_code);
 
 }  // namespace shelfdock::app

@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   int exit_code = shelfdock::app::kExitOk;
   shelfdock::app::AddDetectCommand(app, &exit_code);
   shelfdock::app::AddBagCommand(app, &exit_code);
+  shelfdock::app::AddEvalRealCommand(app, &exit_code);
+  shelfdock::app::AddSimulateCommand(app, &exit_code);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,48 @@
+#include "io/lidar_config_yaml.hpp"
+
+#include "io/yaml_fields.hpp"
+
+namespace shelfdock::io {
+
+sim::LidarConfig ReadLidarConfig(const std::string& path) {
+  const YAML::Node root = LoadYamlFile(path);
+  YamlFields f(root, path, "");
+  sim::LidarConfig c;
+  f.Read("angle_min", c.angle_min_rad);
+  f.Read("angle_increment", c.angle_increment_rad);
+  f.Read("num_beams", c.num_beams);
+  f.Read("frequency", c.frequency_hz);
+  f.Read("sweep_fraction", c.sweep_fraction);
+  f.Read("range_min", c.range_min_m);
+  f.Read("range_max", c.range_max_m);
+  f.Read("enable_range_noise", c.enable_range_noise);
+  f.Read("range_noise_sigma", c.range_noise_sigma_m);
+  f.Read("range_noise_per_m", c.range_noise_per_m);
+  f.Read("enable_quantisation", c.enable_quantisation);
+  f.Read("quantisation", c.quantisation_m);
+  f.Read("enable_footprint", c.enable_footprint);
+  f.Read("beam_divergence", c.beam_divergence_rad);
+  f.Read("beam_aperture", c.beam_aperture_m);
+  f.Read("footprint_rays", c.footprint_rays);
+  f.Read("min_echo_fraction", c.min_echo_fraction);
+  f.Read("enable_dropouts", c.enable_dropouts);
+  f.Read("dropout_probability", c.dropout_probability);
+  f.Read("dark_dropout_gain", c.dark_dropout_gain);
+  f.Read("shiny_dropout_gain", c.shiny_dropout_gain);
+  f.Read("enable_intensities", c.enable_intensities);
+  f.Read("intensity_scale", c.intensity_scale);
+  f.Read("intensity_noise_rel", c.intensity_noise_rel);
+  f.Read("mount_height", c.mount_height_m);
+  f.Read("enable_tilt", c.enable_tilt);
+  f.Read("tilt_pitch", c.tilt_pitch_rad);
+  f.Read("tilt_roll", c.tilt_roll_rad);
+  f.Read("yaw_offset", c.yaw_offset_rad);
+  f.Read("floor_reflectivity", c.floor_reflectivity);
+  std::string name;  // a label for the preset, for the reader of the file only
+  f.Read("name", name);
+  f.RejectUnknown();
+  if (const auto error = sim::Validate(c)) f.Require(false, error->field, error->requirement);
+  return c;
+}
+
+}  // namespace shelfdock::io

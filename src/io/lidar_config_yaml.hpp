@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+
+#include "sim/lidar_config.hpp"
+
+namespace shelfdock::io {
+
+/// Reads a LiDAR config (config/lidar_*.yaml): every key optional, named as the LidarConfig
+/// field without its unit suffix (`angle_min`, `range_noise_sigma`, ...), SI units (m, rad, Hz).
+/// Absent keys keep the struct's defaults (the WLR-716). Throws InputError naming the key.
+sim::LidarConfig ReadLidarConfig(const std::string& path);
+
+}  // namespace shelfdock::io
