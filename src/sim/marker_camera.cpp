@@ -10,18 +10,24 @@
 namespace shelfdock::sim {
 namespace {
 
-/// A float image of scene radiance in grey levels, before noise and quantisation.
-struct Radiance {
-  int width;
-  int height;
-  std::vector<float> value;
-  float& at(int u, int v) { return value[static_cast<std::size_t>(v * width + u)]; }
-};
-
 /// Pixel box [u0, u1) x [v0, v1) that contains the code's quiet zone, clipped to the image.
 struct Box {
   int u0, v0, u1, v1;
   bool empty() const { return u0 >= u1 || v0 >= v1; }
+  bool contains(int u, int v) const { return u >= u0 && u < u1 && v >= v0 && v < v1; }
+};
+
+/// Scene radiance in grey levels (before noise and quantisation) over a box of the image;
+/// outside the box the scene is uniform background and needs no storage.
+struct Patch {
+  Box box;
+  std::vector<float> value;
+
+  explicit Patch(const Box& b)
+      : box(b), value(b.empty() ? 0 : static_cast<std::size_t>((b.u1 - b.u0) * (b.v1 - b.v0))) {}
+  float& at(int u, int v) {
+    return value[static_cast<std::size_t>((v - box.v0) * (box.u1 - box.u0) + (u - box.u0))];
+  }
 };
 
 /// The planar frames of geometry::UpwardCamera: a point of the code plane at camera-frame
@@ -52,9 +58,9 @@ Box QuietZoneBox(const geometry::UpwardCamera& cam, const geometry::Pose2& T_cam
           clip(std::ceil(v_max) + 1 + margin_px, k.height_px)};
 }
 
-/// Separable Gaussian blur restricted to `box` (outside it the scene is uniform background,
-/// which blur leaves unchanged); reads outside the image clamp to the edge.
-void BlurInBox(Radiance& image, const Box& box, double sigma_px) {
+/// Separable Gaussian blur of the patch. The patch's margin is wider than the kernel, so its
+/// rim is background and clamping reads at the rim see what lies beyond it.
+void Blur(Patch& patch, double sigma_px) {
   const int radius = static_cast<int>(std::ceil(3.0 * sigma_px));
   std::vector<float> kernel(static_cast<std::size_t>(2 * radius + 1));
   float sum = 0.0f;
@@ -65,25 +71,26 @@ void BlurInBox(Radiance& image, const Box& box, double sigma_px) {
   }
   for (float& w : kernel) w /= sum;
 
-  Radiance tmp = image;
-  for (int v = box.v0; v < box.v1; ++v) {
-    for (int u = box.u0; u < box.u1; ++u) {
+  const Box& b = patch.box;
+  Patch tmp(b);
+  for (int v = b.v0; v < b.v1; ++v) {
+    for (int u = b.u0; u < b.u1; ++u) {
       float acc = 0.0f;
       for (int i = -radius; i <= radius; ++i) {
         acc += kernel[static_cast<std::size_t>(i + radius)] *
-               image.at(std::clamp(u + i, 0, image.width - 1), v);
+               patch.at(std::clamp(u + i, b.u0, b.u1 - 1), v);
       }
       tmp.at(u, v) = acc;
     }
   }
-  for (int v = box.v0; v < box.v1; ++v) {
-    for (int u = box.u0; u < box.u1; ++u) {
+  for (int v = b.v0; v < b.v1; ++v) {
+    for (int u = b.u0; u < b.u1; ++u) {
       float acc = 0.0f;
       for (int i = -radius; i <= radius; ++i) {
         acc += kernel[static_cast<std::size_t>(i + radius)] *
-               tmp.at(u, std::clamp(v + i, 0, image.height - 1));
+               tmp.at(u, std::clamp(v + i, b.v0, b.v1 - 1));
       }
-      image.at(u, v) = acc;
+      patch.at(u, v) = acc;
     }
   }
 }
@@ -101,52 +108,70 @@ geometry::GrayImage RenderMarker(const CameraConfig& config, int tag_id,
   const auto background = static_cast<float>(config.background_level * config.exposure);
   const double white = config.white_level * config.exposure;
   const double black = config.black_level * config.exposure;
-  Radiance radiance{
-      k.width_px, k.height_px,
-      std::vector<float>(static_cast<std::size_t>(k.width_px * k.height_px), background)};
-
   // Pixel-area integration by supersampling, only where the label can be.
   const int blur_radius = static_cast<int>(std::ceil(3.0 * config.blur_sigma_px));
   const Box box = QuietZoneBox(cam, T_camera_tag, half_total_m, blur_radius + 1);
+  Patch radiance(box);
+  // Image point (u, v) -> code plane in the camera frame -> code frame -> printed cell
+  // (col, row); the chain is affine, so it is evaluated once and stepped per sample.
   const geometry::Pose2 T_tag_camera = T_camera_tag.inverse();
+  auto to_cell = [&](double u, double v) -> Eigen::Vector2d {
+    const Eigen::Vector2d p_camera(-(v - k.cy_px) / k.fy_px * cam.code_height_m,
+                                   (u - k.cx_px) / k.fx_px * cam.code_height_m);
+    const Eigen::Vector2d p_tag = T_tag_camera * p_camera;
+    // Printed axes of the code: right = +y of the tag frame, down = -x.
+    return {(p_tag.y() + half_total_m) / cell_m, (-p_tag.x() + half_total_m) / cell_m};
+  };
+  const Eigen::Vector2d cell_origin = to_cell(0.0, 0.0);
+  const Eigen::Vector2d cell_per_u = to_cell(1.0, 0.0) - cell_origin;
+  const Eigen::Vector2d cell_per_v = to_cell(0.0, 1.0) - cell_origin;
+
+  auto level_of = [&](const Eigen::Vector2d& cell) -> double {
+    const int col = static_cast<int>(std::floor(cell.x()));
+    const int row = static_cast<int>(std::floor(cell.y()));
+    if (col < 0 || row < 0 || col >= pattern.total_cells || row >= pattern.total_cells) {
+      return background;
+    }
+    return pattern.IsWhite(col, row) ? white : black;
+  };
+  auto same_cell = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return std::floor(a.x()) == std::floor(b.x()) && std::floor(a.y()) == std::floor(b.y());
+  };
+
   const int s = std::max(1, config.supersample);
   const double inv_samples = 1.0 / (s * s);
   for (int v = box.v0; v < box.v1; ++v) {
     for (int u = box.u0; u < box.u1; ++u) {
+      // Pixel (u, v) covers [u - 0.5, u + 0.5) x [v - 0.5, v + 0.5). Cells are convex, so a
+      // pixel whose four corners share a cell is uniform: only edge pixels are supersampled.
+      const Eigen::Vector2d corner = cell_origin + (u - 0.5) * cell_per_u + (v - 0.5) * cell_per_v;
+      if (same_cell(corner, corner + cell_per_u) && same_cell(corner, corner + cell_per_v) &&
+          same_cell(corner, corner + cell_per_u + cell_per_v)) {
+        radiance.at(u, v) = static_cast<float>(level_of(corner + 0.5 * (cell_per_u + cell_per_v)));
+        continue;
+      }
       double sum = 0.0;
       for (int j = 0; j < s; ++j) {
         for (int i = 0; i < s; ++i) {
-          // Sub-pixel sample; pixel (u, v) covers [u - 0.5, u + 0.5) x [v - 0.5, v + 0.5).
-          const double us = u - 0.5 + (i + 0.5) / s;
-          const double vs = v - 0.5 + (j + 0.5) / s;
-          const Eigen::Vector2d p_camera(-(vs - k.cy_px) / k.fy_px * cam.code_height_m,
-                                         (us - k.cx_px) / k.fx_px * cam.code_height_m);
-          const Eigen::Vector2d p_tag = T_tag_camera * p_camera;
-          // Printed axes of the code: right = y_tag, down = -x_tag.
-          const int col = static_cast<int>(std::floor((p_tag.y() + half_total_m) / cell_m));
-          const int row = static_cast<int>(std::floor((-p_tag.x() + half_total_m) / cell_m));
-          if (col < 0 || row < 0 || col >= pattern.total_cells || row >= pattern.total_cells) {
-            sum += background;
-          } else {
-            sum += pattern.IsWhite(col, row) ? white : black;
-          }
+          sum += level_of(corner + (i + 0.5) / s * cell_per_u + (j + 0.5) / s * cell_per_v);
         }
       }
       radiance.at(u, v) = static_cast<float>(sum * inv_samples);
     }
   }
 
-  if (config.blur_sigma_px > 0.0 && !box.empty()) {
-    BlurInBox(radiance, box, config.blur_sigma_px);
-  }
+  if (config.blur_sigma_px > 0.0 && !box.empty()) Blur(radiance, config.blur_sigma_px);
 
   geometry::GrayImage image(k.width_px, k.height_px);
   std::mt19937_64 rng(seed);
   std::normal_distribution<float> noise(0.0f, static_cast<float>(config.noise_std));
   const bool noisy = config.noise_std > 0.0;
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-    const float level = radiance.value[i] + (noisy ? noise(rng) : 0.0f);
-    image.pixels[i] = static_cast<uint8_t>(std::clamp(std::lround(level), 0L, 255L));
+  for (int v = 0; v < image.height; ++v) {
+    for (int u = 0; u < image.width; ++u) {
+      const float scene = box.contains(u, v) ? radiance.at(u, v) : background;
+      const float level = scene + (noisy ? noise(rng) : 0.0f);
+      image.at(u, v) = static_cast<uint8_t>(std::clamp(level + 0.5f, 0.0f, 255.0f));
+    }
   }
   return image;
 }
