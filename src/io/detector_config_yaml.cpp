@@ -1,0 +1,75 @@
+#include "io/detector_config_yaml.hpp"
+
+#include "io/yaml_fields.hpp"
+
+namespace shelfdock::io {
+namespace {
+
+void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
+  f.Read("roi_gamma", c.roi_gamma);
+  f.Read("cluster_gap_m", c.cluster_gap_m);
+  f.Read("cluster_gap_beams", c.cluster_gap_beams);
+  f.Read("trailing_min_angle_rad", c.trailing_min_angle_rad);
+  f.Read("trailing_min_jump_m", c.trailing_min_jump_m);
+  f.Read("leg_extent_margin_m", c.leg_extent_margin_m);
+  f.Read("min_points", c.min_points);
+  f.Read("min_point_fraction", c.min_point_fraction);
+  f.RejectUnknown();
+}
+
+void ReadLegSearch(YamlFields f, perception::LegSearchConfig& c) {
+  f.Read("pair_tolerance_m", c.pair_tolerance_m);
+  f.Read("pythagoras_tolerance_m", c.pythagoras_tolerance_m);
+  f.Read("fourth_leg_radius_m", c.fourth_leg_radius_m);
+  f.Read("allow_three_legs", c.allow_three_legs);
+  f.Read("max_leg_sets", c.max_leg_sets);
+  f.RejectUnknown();
+}
+
+void ReadModelMatch(YamlFields f, perception::ModelMatchConfig& c) {
+  f.Read("gamma_L_m", c.gamma_L_m);
+  f.Read("gamma_W_m", c.gamma_W_m);
+  f.Read("gamma_sum_m", c.gamma_sum_m);
+  f.Read("lambda_m", c.lambda_m);
+  f.RejectUnknown();
+}
+
+void ReadLegFit(YamlFields f, perception::LegFitConfig& c) {
+  f.Read("loss_scale_m", c.loss_scale_m);
+  f.Read("prior_weight", c.prior_weight);
+  f.Read("pca_min_points", c.pca_min_points);
+  f.Read("pca_min_anisotropy", c.pca_min_anisotropy);
+  f.Read("max_iterations", c.max_iterations);
+  f.RejectUnknown();
+}
+
+void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
+  f.Read("loss_scale_m", c.loss_scale_m);
+  f.Read("max_iterations", c.max_iterations);
+  f.Read("min_leg_sigma_m", c.min_leg_sigma_m);
+  f.Read("max_rms_m", c.max_rms_m);
+  f.Read("interior_margin_m", c.interior_margin_m);
+  f.Read("max_interior_points", c.max_interior_points);
+  f.RejectUnknown();
+}
+
+}  // namespace
+
+perception::DetectorConfig ReadDetectorConfig(const std::string& path) {
+  const YAML::Node root = LoadYamlFile(path);
+  perception::DetectorConfig config;
+  YamlFields top(root, path, "");
+  ReadPreprocess(YamlFields(top.Child("preprocess"), path, "preprocess"), config.preprocess);
+  ReadLegSearch(YamlFields(top.Child("leg_search"), path, "leg_search"), config.leg_search);
+  ReadModelMatch(YamlFields(top.Child("model_match"), path, "model_match"), config.model_match);
+  ReadLegFit(YamlFields(top.Child("leg_fit"), path, "leg_fit"), config.leg_fit);
+  ReadShelfFit(YamlFields(top.Child("shelf_fit"), path, "shelf_fit"), config.shelf_fit);
+  top.RejectUnknown();
+  // The rules live with the struct; here they only gain the file name.
+  if (const auto v = perception::FindConfigViolation(config)) {
+    throw InputError(path, v->key, "must be " + v->requirement);
+  }
+  return config;
+}
+
+}  // namespace shelfdock::io

@@ -1,0 +1,70 @@
+#include "io/detector_config_yaml.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "io/input_error.hpp"
+
+namespace shelfdock::io {
+namespace {
+
+std::string WriteTemp(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / ("shelfdock_io_" + name);
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+// Expects InputError whose field is `key`.
+void ExpectKeyError(const std::string& yaml, const std::string& key) {
+  const std::string path = WriteTemp("bad.yaml", yaml);
+  try {
+    ReadDetectorConfig(path);
+    FAIL() << "expected InputError for " << key;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), key);
+    EXPECT_EQ(e.file(), path);
+  }
+}
+
+TEST(DetectorConfigYamlTest, ShippedFileHoldsTheStructDefaults) {
+  const perception::DetectorConfig read =
+      ReadDetectorConfig(std::string(SHELFDOCK_SOURCE_DIR) + "/config/detector.yaml");
+  const perception::DetectorConfig def;
+  EXPECT_EQ(read.preprocess.roi_gamma, def.preprocess.roi_gamma);
+  EXPECT_EQ(read.preprocess.cluster_gap_m, def.preprocess.cluster_gap_m);
+  EXPECT_EQ(read.preprocess.trailing_min_angle_rad, def.preprocess.trailing_min_angle_rad);
+  EXPECT_EQ(read.preprocess.min_points, def.preprocess.min_points);
+  EXPECT_EQ(read.leg_search.pair_tolerance_m, def.leg_search.pair_tolerance_m);
+  EXPECT_EQ(read.leg_search.allow_three_legs, def.leg_search.allow_three_legs);
+  EXPECT_EQ(read.model_match.gamma_sum_m, def.model_match.gamma_sum_m);
+  EXPECT_EQ(read.model_match.lambda_m, def.model_match.lambda_m);
+  EXPECT_EQ(read.leg_fit.loss_scale_m, def.leg_fit.loss_scale_m);
+  EXPECT_EQ(read.leg_fit.pca_min_anisotropy, def.leg_fit.pca_min_anisotropy);
+  EXPECT_EQ(read.shelf_fit.max_rms_m, def.shelf_fit.max_rms_m);
+  EXPECT_EQ(read.shelf_fit.max_interior_points, def.shelf_fit.max_interior_points);
+}
+
+TEST(DetectorConfigYamlTest, ReadsGivenKeysAndKeepsDefaultsForTheRest) {
+  const auto c = ReadDetectorConfig(WriteTemp(
+      "ok.yaml", "preprocess: {cluster_gap_m: 0.08}\nleg_search: {allow_three_legs: false}\n"));
+  EXPECT_DOUBLE_EQ(c.preprocess.cluster_gap_m, 0.08);
+  EXPECT_FALSE(c.leg_search.allow_three_legs);
+  EXPECT_EQ(c.model_match.gamma_L_m, perception::ModelMatchConfig{}.gamma_L_m);
+  EXPECT_NO_THROW(ReadDetectorConfig(WriteTemp("empty.yaml", "")));
+}
+
+TEST(DetectorConfigYamlTest, ErrorsNameTheKey) {
+  ExpectKeyError("preprocess: {clustre_gap_m: 0.05}\n", "preprocess.clustre_gap_m");
+  ExpectKeyError("preproces: {cluster_gap_m: 0.05}\n", "preproces");
+  ExpectKeyError("preprocess: {cluster_gap_m: -0.05}\n", "preprocess.cluster_gap_m");
+  ExpectKeyError("preprocess: {roi_gamma: 0.4}\n", "preprocess.roi_gamma");
+  ExpectKeyError("leg_fit: {max_iterations: many}\n", "leg_fit.max_iterations");
+  ExpectKeyError("shelf_fit: {max_interior_points: -2}\n", "shelf_fit.max_interior_points");
+  ExpectKeyError("model_match: {gamma_sum_m: .nan}\n", "model_match.gamma_sum_m");
+  EXPECT_THROW(ReadDetectorConfig("/nonexistent/detector.yaml"), InputError);
+}
+
+}  // namespace
+}  // namespace shelfdock::io
