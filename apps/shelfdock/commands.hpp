@@ -15,5 +15,6 @@ void AddDetectCommand(CLI::App& app, int* exit_code);
 void AddBagCommand(CLI::App& app, int* exit_code);
 void AddEvalRealCommand(CLI::App& app, int* exit_code);
 void AddSimulateCommand(CLI::App& app, int* exit_code);
+void AddMarkerCommand(CLI::App& app, int* exit_code);
 
 }  // namespace shelfdock::app

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   shelfdock::app::AddBagCommand(app, &exit_code);
   shelfdock::app::AddEvalRealCommand(app, &exit_code);
   shelfdock::app::AddSimulateCommand(app, &exit_code);
+  shelfdock::app::AddMarkerCommand(app, &exit_code);
 
   try {
     app.parse(argc, argv);
