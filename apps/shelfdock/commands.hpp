@@ -16,5 +16,6 @@ void AddBagCommand(CLI::App& app, int* exit_code);
 void AddEvalRealCommand(CLI::App& app, int* exit_code);
 void AddSimulateCommand(CLI::App& app, int* exit_code);
 void AddMarkerCommand(CLI::App& app, int* exit_code);
+void AddDockCommands(CLI::App& app, int* exit_code);  ///< dock and eval-docking
 
 }  // namespace shelfdock::app

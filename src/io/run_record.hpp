@@ -1,0 +1,37 @@
+#pragma once
+
+// Docking run record (`shelfdock dock --record FILE`): JSON Lines, one object per line.
+//
+//   {"type": "header", "scenario": name, "method": "continuous"|"stop-and-recognise", "seed": N,
+//    "target_shelf": id, "preset": {"x","y","yaw"}, "shelves": [{"id","model","x","y","yaw",
+//    "length","width","legs": [[x, y], ...]}], "robot": {"length","width"}}
+//   {"type": "step", "t": s, "phase": "approach"|"dock"|"stand"|"verify"|"adjust"|"lift"|
+//    "abort"|"done", "true": {"x","y","yaw"}, "odom": {...}, "estimate": {...} (localisation),
+//    "cmd": {"v", "w"}, optional "scan": [[x, y], ...] (this step's scan in the world frame,
+//    placed with the true pose), "detection": {...} (last accepted detection), "shelf": {...}
+//    (fused shelf estimate), "path": [[x, y, yaw], ...] (when re-planned), "events": [text]}
+//   {"type": "summary", ...the `shelfdock dock` result object...}
+//
+// Frames: everything is in the world (= map) frame. What the robot keeps in its odometry frame
+// (detection, fused shelf, path) is drawn where the robot believes it is relative to itself,
+// i.e. mapped with the true world-from-odometry transform at that step. Units: m, rad, s.
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "eval/docking_runner.hpp"
+#include "sim/scenario.hpp"
+
+namespace shelfdock::io {
+
+/// The `shelfdock dock` result object (result, reason, time_s, errors, ...).
+nlohmann::json DockingRunToJson(const eval::DockingRun& run);
+
+/// Writes the record of `run` (run with RunConfig::record) as JSON Lines; throws InputError when
+/// the file cannot be written.
+void WriteRunRecord(const std::string& path, const sim::Scenario& scenario,
+                    const geometry::Pose2& T_map_shelf_preset, const eval::DockingRun& run,
+                    double robot_length_m, double robot_width_m);
+
+}  // namespace shelfdock::io
