@@ -9,12 +9,16 @@ namespace shelfdock::sim {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kDepthEdge_m = 0.05;  // sub-ray spread that counts as straddling an edge
+constexpr double kDepthEdge_m = 0.05;       // sub-ray spread that counts as straddling an edge
+constexpr double kMovingRefresh_s = 0.001;  // how often moving obstacles are re-placed
 
 /// One sub-ray's return: slant range, what it hit and how strongly it reflects.
 struct SubHit {
   double range_m = kInf;  // slant range along the beam
-  const Primitive* primitive = nullptr;
+  bool hit = false;       // an object (not the floor); kind/object_id/part say which
+  ObjectKind kind = ObjectKind::kWall;
+  int object_id = -1;
+  int part = 0;
   bool floor = false;
   double reflectivity = 0.0;
   double cos_incidence = 1.0;
@@ -50,18 +54,25 @@ Lidar::Lidar(LidarConfig config, std::uint64_t seed) : config_(config), rng_(see
 }
 
 Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_lidar,
-                            double beam_angle_rad, const std::vector<Primitive>& moving) const {
+                            double beam_angle_rad, const std::vector<Primitive>& moving,
+                            bool footprint) const {
   const LidarConfig& c = config_;
   double azimuth = beam_angle_rad, horiz = 1.0, dz_dt = 0.0;
-  if (c.enable_tilt) {
+  if (c.enable_tilt && (c.tilt_pitch_rad != 0.0 || c.tilt_roll_rad != 0.0)) {
     TiltedDirection(beam_angle_rad, c.tilt_pitch_rad, c.tilt_roll_rad, &azimuth, &horiz, &dz_dt);
   }
   const double floor_t = dz_dt < 0.0 ? c.mount_height_m / -dz_dt : kInf;  // h / tan(depression)
 
+  const double yaw0 = T_world_lidar.yaw + azimuth;
+  const Eigen::Vector2d dir0(std::cos(yaw0), std::sin(yaw0));
   auto cast = [&](double u) {  // u in [-0.5, 0.5] across the footprint
-    const double yaw = T_world_lidar.yaw + azimuth + u * c.beam_divergence_rad;
     CastQuery q;
-    q.ray.dir = Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+    if (u == 0.0) {
+      q.ray.dir = dir0;
+    } else {
+      const double yaw = yaw0 + u * c.beam_divergence_rad;
+      q.ray.dir = Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+    }
     const Eigen::Vector2d across(-q.ray.dir.y(), q.ray.dir.x());
     q.ray.origin = T_world_lidar.translation() + u * c.beam_aperture_m * across;
     q.max_t_m = std::min(c.range_max_m * horiz, floor_t);
@@ -72,7 +83,10 @@ Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_l
     SubHit s;
     if (hit.primitive != nullptr) {
       s.range_m = hit.t_m / horiz;
-      s.primitive = hit.primitive;
+      s.hit = true;
+      s.kind = hit.primitive->kind;
+      s.object_id = hit.primitive->object_id;
+      s.part = hit.primitive->part;
       s.reflectivity = hit.primitive->material.reflectivity;
       s.shiny = hit.primitive->material.shiny;
       const Eigen::Vector2d p = q.ray.origin + hit.t_m * q.ray.dir;
@@ -93,7 +107,7 @@ Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_l
   echo.centre = cast(0.0);
   echo.range_m = echo.centre.range_m;
   echo.intensity = std::isfinite(echo.range_m) ? strength(echo.centre) : 0.0;
-  if (!c.enable_footprint) return echo;
+  if (!footprint) return echo;
 
   // Cheap test first: if the footprint's two edges agree with its centre, no depth edge.
   const SubHit left = cast(-0.5);
@@ -161,23 +175,67 @@ LabelledScan Lidar::ScanLabelled(const World& world, const PoseAt& T_world_lidar
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const bool moving = world.HasMovingObstacles();
-  moving_.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = t0_s + static_cast<double>(i) * scan.time_increment;
-    if (moving) {
+  // People and robots are re-placed every millisecond of the sweep, not every beam: at walking
+  // speed they move about a millimetre in that time.
+  double moving_t = -std::numeric_limits<double>::infinity();
+  auto moving_at = [&](double t) -> const std::vector<Primitive>& {
+    if (moving && std::abs(t - moving_t) > kMovingRefresh_s) {
       moving_.clear();
       world.AppendMovingObstacles(t, &moving_);
+      moving_t = t;
     }
-    // The beam really leaves at its reported angle plus the calibration error.
-    const double theta = scan.BeamAngle(i) + c.yaw_offset_rad;
-    const Echo echo = CastBeam(world, T_world_lidar_at(t), theta, moving_);
+    return moving_;
+  };
+  moving_.clear();
+  // The beam really leaves at its reported angle plus the calibration error.
+  auto theta = [&](std::size_t i) { return scan.BeamAngle(i) + c.yaw_offset_rad; };
 
+  // Pass 1: the centre ray of every beam, each from the pose at its own firing time.
+  std::vector<geometry::Pose2> poses(n);
+  std::vector<Echo> echoes(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = t0_s + static_cast<double>(i) * scan.time_increment;
+    poses[i] = T_world_lidar_at(t);
+    echoes[i] = CastBeam(world, poses[i], theta(i), moving_at(t), false);
+  }
+  // Pass 2: the beam footprint only matters where a depth edge lies near the beam, and an
+  // edge inside a footprint of half-width w beam steps shows as a jump between centre rays
+  // within w beams. Casting the sub-rays only there keeps a scan near the cost of its centre
+  // rays. (A thin object that no centre ray hits stays unseen, as with no footprint at all.)
+  if (c.enable_footprint) {
+    // A silhouette edge is where the surface hit changes: another object, another leg, the
+    // floor, or nothing. (A continuous wall seen at grazing incidence is not an edge.)
+    auto jump = [&](std::size_t i, std::size_t j) {
+      const SubHit& a = echoes[i].centre;
+      const SubHit& b = echoes[j].centre;
+      return std::isfinite(a.range_m) != std::isfinite(b.range_m) || a.hit != b.hit ||
+             a.kind != b.kind || a.object_id != b.object_id || a.part != b.part;
+    };
+    const auto w = static_cast<std::size_t>(
+        std::max(1.0, std::ceil(0.5 * c.beam_divergence_rad / c.angle_increment_rad)));
+    std::vector<bool> edge(n, false);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      if (!jump(i, i + 1)) continue;
+      for (std::size_t k = i + 1 >= w ? i + 1 - w : 0; k <= std::min(n - 1, i + w); ++k) {
+        edge[k] = true;
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!edge[i]) continue;
+      const double t = t0_s + static_cast<double>(i) * scan.time_increment;
+      echoes[i] = CastBeam(world, poses[i], theta(i), moving_at(t), true);
+    }
+  }
+
+  // Pass 3: what the sensor makes of each echo.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Echo& echo = echoes[i];
     BeamTruth& truth = out.truth[i];
     truth.true_range_m = std::isfinite(echo.centre.range_m) ? echo.centre.range_m : kNaN;
     truth.mixed = echo.mixed;
-    if (echo.centre.primitive != nullptr) {
-      truth.kind = echo.centre.primitive->kind;
-      truth.object_id = echo.centre.primitive->object_id;
+    if (echo.centre.hit) {
+      truth.kind = echo.centre.kind;
+      truth.object_id = echo.centre.object_id;
     } else if (echo.centre.floor) {
       truth.kind = ObjectKind::kFloor;
     }

@@ -48,7 +48,7 @@ class Lidar {
  private:
   struct Echo;
   Echo CastBeam(const World& world, const geometry::Pose2& T_world_lidar, double beam_angle_rad,
-                const std::vector<Primitive>& moving) const;
+                const std::vector<Primitive>& moving, bool footprint) const;
 
   LidarConfig config_;
   std::mt19937_64 rng_;

@@ -6,25 +6,29 @@
 namespace shelfdock::sim {
 
 namespace {
-std::vector<Eigen::Vector2d> Legs(const PathMotion& m) {
-  std::vector<Eigen::Vector2d> pts = m.waypoints;
-  if (m.closed && pts.size() > 1) pts.push_back(pts.front());
-  return pts;
+/// Waypoint k of the traversed polyline; a closed path repeats its first point at the end.
+const Eigen::Vector2d& Point(const PathMotion& m, std::size_t k) {
+  return m.waypoints[k % m.waypoints.size()];
+}
+std::size_t NumPoints(const PathMotion& m) {
+  const std::size_t n = m.waypoints.size();
+  return m.closed && n > 1 ? n + 1 : n;
 }
 }  // namespace
 
 double PathMotion::Length() const {
-  const auto pts = Legs(*this);
   double len = 0.0;
-  for (std::size_t i = 1; i < pts.size(); ++i) len += (pts[i] - pts[i - 1]).norm();
+  for (std::size_t i = 1; i < NumPoints(*this); ++i) {
+    len += (Point(*this, i) - Point(*this, i - 1)).norm();
+  }
   return len;
 }
 
 geometry::Pose2 PathMotion::PoseAt(double t_s) const {
-  const auto pts = Legs(*this);
-  if (pts.empty()) return {};
+  const std::size_t n = NumPoints(*this);
+  if (n == 0) return {};
   const double len = Length();
-  if (pts.size() == 1 || len <= 0.0) return {pts.front().x(), pts.front().y(), 0.0};
+  if (n == 1 || len <= 0.0) return {waypoints.front().x(), waypoints.front().y(), 0.0};
 
   // Distance travelled, folded onto the path: modulo the loop, or a back-and-forth of 2 L.
   double s = start_offset_m + speed_mps * t_s;
@@ -40,19 +44,19 @@ geometry::Pose2 PathMotion::PoseAt(double t_s) const {
       backwards = true;
     }
   }
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    const Eigen::Vector2d e = pts[i] - pts[i - 1];
+  for (std::size_t i = 1; i < n; ++i) {
+    const Eigen::Vector2d e = Point(*this, i) - Point(*this, i - 1);
     const double seg = e.norm();
-    if (s <= seg || i + 1 == pts.size()) {
+    if (s <= seg || i + 1 == n) {
       const double u = seg > 0.0 ? std::min(s / seg, 1.0) : 0.0;
-      const Eigen::Vector2d p = pts[i - 1] + u * e;
+      const Eigen::Vector2d p = Point(*this, i - 1) + u * e;
       double yaw = std::atan2(e.y(), e.x());
       if (backwards) yaw += std::numbers::pi;
       return {p.x(), p.y(), yaw};
     }
     s -= seg;
   }
-  return {pts.back().x(), pts.back().y(), 0.0};
+  return {Point(*this, n - 1).x(), Point(*this, n - 1).y(), 0.0};
 }
 
 }  // namespace shelfdock::sim

@@ -29,6 +29,7 @@ struct Primitive {
   Material material;
   ObjectKind kind = ObjectKind::kWall;
   int object_id = -1;  ///< shelf id for legs, else the object's index in its World list
+  int part = 0;        ///< leg index for shelf legs and people's legs, else 0
 
   static Primitive Circle(const Eigen::Vector2d& centre, double radius_m);
   static Primitive Segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b);

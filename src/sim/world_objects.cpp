@@ -74,6 +74,7 @@ void AppendShelfLegs(const ShelfInstance& shelf, std::vector<Primitive>* out) {
   proto.kind = ObjectKind::kShelfLeg;
   proto.object_id = shelf.id;
   for (const LegFootprint& leg : ShelfLegFootprints(shelf)) {
+    proto.part = leg.leg_index;
     if (leg.shape == geometry::LegShape::kCircle) {
       Primitive p = proto;
       p.shape = Primitive::Shape::kCircle;
@@ -117,8 +118,10 @@ void AppendRoundPost(const RoundPost& post, int index, std::vector<Primitive>* o
 }
 
 void AppendPerson(const Person& person, double t_s, int index, std::vector<Primitive>* out) {
-  for (const Eigen::Vector2d& c : person.LegCentresAt(t_s)) {
-    Primitive p = Primitive::Circle(c, person.leg_radius_m);
+  const auto legs = person.LegCentresAt(t_s);
+  for (std::size_t k = 0; k < legs.size(); ++k) {
+    Primitive p = Primitive::Circle(legs[k], person.leg_radius_m);
+    p.part = static_cast<int>(k);
     p.height_m = person.height_m;
     p.material = person.material;
     p.kind = ObjectKind::kPerson;
