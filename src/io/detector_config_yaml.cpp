@@ -31,6 +31,7 @@ void ReadModelMatch(YamlFields f, perception::ModelMatchConfig& c) {
   f.Read("gamma_W_m", c.gamma_W_m);
   f.Read("gamma_sum_m", c.gamma_sum_m);
   f.Read("lambda_m", c.lambda_m);
+  f.Read("three_leg_err_sum_m", c.three_leg_err_sum_m);
   f.RejectUnknown();
 }
 

@@ -134,6 +134,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       // Eq. 2 again on the fitted (unbiased) leg centres: this is what tells close models apart.
       const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, pair.model);
       if (!PassesThresholds(refined, config_.model_match)) continue;
+      if (set.count == 3 && refined.err_sum > config_.model_match.three_leg_err_sum_m) continue;
       if (best && refined.err_sum >= best->detection.err_sum) continue;
       if (config_.shelf_fit.max_interior_points >= 0 &&
           CountInteriorPoints(points, fit->T_lidar_shelf, model,

@@ -1,0 +1,39 @@
+# Runs `shelfdock detect` on the example scan and on bad inputs; checks exit codes and that
+# errors name the file and the field. Invoked by CTest with -DSHELFDOCK, -DSOURCE_DIR, -DWORK_DIR.
+set(MODELS ${SOURCE_DIR}/config/models.yaml)
+set(DATA ${SOURCE_DIR}/tests/data)
+
+function(expect_run expected_code must_match)
+  execute_process(COMMAND ${SHELFDOCK} detect ${ARGN}
+                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL expected_code)
+    message(FATAL_ERROR "detect ${ARGN}: exit ${code}, expected ${expected_code}\n${out}\n${err}")
+  endif()
+  if(NOT "${out}${err}" MATCHES "${must_match}")
+    message(FATAL_ERROR "detect ${ARGN}: output does not match '${must_match}'\n${out}\n${err}")
+  endif()
+endfunction()
+
+# The example scan holds one t1-rect-1075x883 at (2.0, 0.2, 0.1); with frames given.
+expect_run(0 "\"model\":\"t1-rect-1075x883\".*\"x\":2\\.0[0-1]" --models ${MODELS}
+           --scan ${DATA}/example_scan.json)
+expect_run(0 "\"base\":.*\"map\":" --models ${MODELS} --scan ${DATA}/example_scan.json
+           --preset 2.1,0.1,0.0 --extrinsic 0.3,0,0 --robot-pose 1,2,0.5
+           --params ${SOURCE_DIR}/config/detector.yaml)
+# No shelf where the preset looks (far from the shelf, ROI empty): empty list, exit 0.
+expect_run(0 "\"detections\":\\[\\]" --models ${MODELS} --scan ${DATA}/example_scan.json
+           --preset -3,3,0)
+
+# Bad input: exit 2, the message names the file and the field.
+expect_run(2 "missing.json" --models ${MODELS} --scan ${DATA}/missing.json)
+expect_run(2 "malformed_scan.json" --models ${MODELS} --scan ${DATA}/malformed_scan.json)
+expect_run(2 "nan_text_scan.json" --models ${MODELS} --scan ${DATA}/nan_text_scan.json)
+expect_run(2 "--preset" --models ${MODELS} --scan ${DATA}/example_scan.json --preset 1,2)
+expect_run(2 "--extrinsic" --models ${MODELS} --scan ${DATA}/example_scan.json --extrinsic a,b,c)
+expect_run(2 "--robot-pose" --models ${MODELS} --scan ${DATA}/example_scan.json --robot-pose 1,2,nan)
+expect_run(2 "detector_unknown_key.yaml: preprocess.clustre_gap_beams" --models ${MODELS}
+           --scan ${DATA}/example_scan.json --params ${DATA}/detector_unknown_key.yaml)
+expect_run(2 "detector_impossible_value.yaml: model_match.gamma_L_m" --models ${MODELS}
+           --scan ${DATA}/example_scan.json --params ${DATA}/detector_impossible_value.yaml)
+expect_run(2 "missing_models.yaml" --models ${DATA}/missing_models.yaml
+           --scan ${DATA}/example_scan.json)

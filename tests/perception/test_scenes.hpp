@@ -1,0 +1,112 @@
+#pragma once
+// Test helpers: the paper's shelf models and simulated scenes (sim::World + sim::Lidar), plus an
+// analytic ray caster for stage tests that need exact points on one leg.
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/angle.hpp"
+#include "geometry/laser_scan.hpp"
+#include "geometry/pose2.hpp"
+#include "geometry/shelf_model.hpp"
+#include "perception/preprocess.hpp"
+#include "sim/lidar.hpp"
+#include "sim/world.hpp"
+
+namespace shelfdock::perception::testing {
+
+inline geometry::ShelfModel MakeModel(const char* name, double length, double width,
+                                      geometry::LegShape shape, double leg) {
+  geometry::ShelfModel m;
+  m.name = name;
+  m.length_m = length;
+  m.width_m = width;
+  m.leg.shape = shape;
+  m.leg.length_m = leg;
+  m.leg.width_m = leg;
+  return m;
+}
+
+/// The paper's Table 1 (same values as config/models.yaml).
+inline std::vector<geometry::ShelfModel> PaperModels() {
+  using geometry::LegShape;
+  return {MakeModel("t1-round-900x810", 0.90, 0.81, LegShape::kCircle, 0.026),
+          MakeModel("t1-rect-1075x883", 1.075, 0.883, LegShape::kRectangle, 0.04),
+          MakeModel("t1-rect-1250x1250", 1.25, 1.25, LegShape::kRectangle, 0.04),
+          MakeModel("t1-rect-1080x856", 1.08, 0.856, LegShape::kRectangle, 0.04)};
+}
+
+/// A 12 m x 10 m room around the origin (walls far behind every test shelf).
+inline void AddRoom(sim::World& world) {
+  world.AddWall({{-5.0, -5.0}, {7.0, -5.0}, {7.0, 5.0}, {-5.0, 5.0}}, true);
+}
+
+/// A scan of `world` from a LiDAR at T_world_lidar with the WLR-716 defaults (10 mm noise,
+/// mixed points, dropouts) unless `config` is given.
+inline geometry::LaserScan SimScan(const sim::World& world, const geometry::Pose2& T_world_lidar,
+                                   std::uint64_t seed, sim::LidarConfig config = {}) {
+  sim::Lidar lidar(config, seed);
+  return lidar.Scan(world, T_world_lidar);
+}
+
+/// Smallest heading error modulo the model's symmetry (pi, or pi/2 for squares).
+inline double SymmetricYawError(double yaw, double truth, bool square) {
+  const double step = square ? 0.5 * M_PI : M_PI;
+  const double d = geometry::AngleDiff(yaw, truth);
+  return std::abs(d - step * std::round(d / step));
+}
+
+/// Exact points of a ray fan (sensor at the origin) on a circle or an oriented box: the first
+/// hit of each beam, angle_increment apart, in beam order. For leg-fit tests.
+inline std::vector<ScanPoint> CastCircle(const Eigen::Vector2d& centre, double radius,
+                                         double angle_increment) {
+  std::vector<ScanPoint> out;
+  const double bearing = std::atan2(centre.y(), centre.x());
+  const double half = std::asin(std::min(1.0, radius / centre.norm()));
+  int beam = 0;
+  for (double a = bearing - half; a <= bearing + half; a += angle_increment, ++beam) {
+    const Eigen::Vector2d u(std::cos(a), std::sin(a));
+    const double b = u.dot(centre);
+    const double disc = b * b - (centre.squaredNorm() - radius * radius);
+    if (disc < 0.0) continue;
+    const double t = b - std::sqrt(disc);
+    out.push_back({t * u, t, a, beam});
+  }
+  return out;
+}
+
+inline std::vector<ScanPoint> CastBox(const geometry::Pose2& T_lidar_box, double length,
+                                      double width, double angle_increment) {
+  std::vector<ScanPoint> out;
+  const geometry::Pose2 T_box_lidar = T_lidar_box.inverse();
+  const double bearing = std::atan2(T_lidar_box.y, T_lidar_box.x);
+  const double half = std::atan2(std::hypot(length, width), T_lidar_box.translation().norm());
+  int beam = 0;
+  for (double a = bearing - half; a <= bearing + half; a += angle_increment, ++beam) {
+    // Slab test in the box frame.
+    const Eigen::Vector2d o = T_box_lidar * Eigen::Vector2d::Zero();
+    const Eigen::Vector2d d = T_box_lidar.rotation() * Eigen::Vector2d(std::cos(a), std::sin(a));
+    double t0 = -1e9, t1 = 1e9;
+    const double h[2] = {0.5 * length, 0.5 * width};
+    bool hit = true;
+    for (int k = 0; k < 2; ++k) {
+      if (std::abs(d[k]) < 1e-12) {
+        if (std::abs(o[k]) > h[k]) hit = false;
+        continue;
+      }
+      double ta = (-h[k] - o[k]) / d[k], tb = (h[k] - o[k]) / d[k];
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta);
+      t1 = std::min(t1, tb);
+    }
+    if (!hit || t0 > t1 || t0 <= 0.0) continue;
+    const Eigen::Vector2d p(t0 * std::cos(a), t0 * std::sin(a));
+    out.push_back({p, t0, a, beam});
+  }
+  return out;
+}
+
+}  // namespace shelfdock::perception::testing
