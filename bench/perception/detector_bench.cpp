@@ -1,0 +1,54 @@
+// Speed of Detector::Detect on 811-beam simulated WLR-716 scans (paper's sensor): one shelf in
+// a room, three shelves side by side, and 100 leg-like round posts around one shelf.
+// Targets (issue 2): median < 100 us for one shelf, < 1 ms with 100 posts.
+#include <random>
+
+#include <benchmark/benchmark.h>
+
+#include "perception/detector.hpp"
+#include "test_scenes.hpp"
+
+namespace shelfdock::perception {
+namespace {
+
+void RunDetect(benchmark::State& state, const sim::World& world) {
+  const Detector detector(testing::PaperModels());
+  const geometry::LaserScan scan = testing::SimScan(world, {}, 1);
+  for (auto _ : state) {
+    DetectionResult r = detector.Detect(scan);
+    benchmark::DoNotOptimize(r);
+  }
+}
+
+void BM_DetectOneShelfInRoom(benchmark::State& state) {
+  sim::World world;
+  testing::AddRoom(world);
+  world.AddShelf(1, testing::PaperModels()[1], {2.0, 0.2, 0.1});
+  RunDetect(state, world);
+}
+
+void BM_DetectThreeShelves(benchmark::State& state) {
+  sim::World world;
+  testing::AddRoom(world);
+  const auto model = testing::PaperModels()[3];
+  for (int i = -1; i <= 1; ++i)
+    world.AddShelf(i + 2, model, {2.2, i * (model.width_m + 0.34), 0.0});
+  RunDetect(state, world);
+}
+
+void BM_DetectHundredPosts(benchmark::State& state) {
+  sim::World world;
+  testing::AddRoom(world);
+  world.AddShelf(1, testing::PaperModels()[1], {2.0, 0.2, 0.1});
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> ux(0.5, 6.0), uy(-4.5, 4.5), ur(0.012, 0.025);
+  for (int i = 0; i < 100; ++i) world.AddRoundPost({ux(rng), uy(rng)}, ur(rng));
+  RunDetect(state, world);
+}
+
+BENCHMARK(BM_DetectOneShelfInRoom)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DetectThreeShelves)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DetectHundredPosts)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace shelfdock::perception
