@@ -47,6 +47,9 @@ nlohmann::json StatsJson(const eval::AbsErrorStats& s) {
 }
 
 nlohmann::json SummaryJson(const eval::MethodSummary& s) {
+  nlohmann::json phases = io::PhaseTimesJson(s.mean_phases);
+  phases.erase("code_checks");  // counts are averaged separately (fractional)
+  phases.erase("adjustments");
   return {{"runs", s.runs},
           {"success_rate", s.runs > 0 ? static_cast<double>(s.successes) / s.runs : 0.0},
           {"mean_time_s", s.mean_time_s},
@@ -60,7 +63,10 @@ nlohmann::json SummaryJson(const eval::MethodSummary& s) {
             {"y", StatsJson(s.after_y)},
             {"yaw", StatsJson(s.after_yaw)},
             {"within_3mm_5mrad", s.within_after}}},
-          {"min_leg_clearance_m", s.min_leg_clearance_m}};
+          {"min_leg_clearance_m", s.min_leg_clearance_m},
+          {"mean_phases_s", phases},
+          {"mean_code_checks", s.mean_code_checks},
+          {"mean_adjustments", s.mean_adjustments}};
 }
 
 int RunDock(const DockOptions& opt) {

@@ -54,6 +54,42 @@ PoseError ErrorInShelfFrame(const Pose2& T_world_base, const Pose2& T_world_shel
   return {e.x, e.y, e.yaw, true};
 }
 
+/// Books one control step (the command it applies) to the phase the Docker is in after it.
+void AddPhaseTime(docking::Phase phase, const docking::Command& cmd, double dt_s,
+                  PhaseTimes* times) {
+  using docking::Phase;
+  for (const std::string& e : cmd.events) {
+    if (e.rfind("code_check:", 0) == 0) ++times->code_checks;
+    if (e.rfind("adjust: try", 0) == 0) ++times->adjustments;
+  }
+  switch (phase) {
+    case Phase::kApproach:
+      times->approach_s += dt_s;
+      break;
+    case Phase::kDock:
+      times->dock_s += dt_s;
+      if (std::abs(cmd.velocity.v_mps) < 0.1) times->final_slow_s += dt_s;
+      break;
+    case Phase::kStand:
+      times->stand_s += dt_s;
+      break;
+    case Phase::kVerify:
+      times->verify_s += dt_s;
+      break;
+    case Phase::kAdjust:
+      times->adjust_s += dt_s;
+      break;
+    case Phase::kLift:
+      times->lift_s += dt_s;
+      break;
+    case Phase::kAbort:
+      times->abort_s += dt_s;
+      break;
+    case Phase::kDone:
+      break;
+  }
+}
+
 }  // namespace
 
 double FootprintLegDistance(const Pose2& T_world_base, double length_m, double width_m,
@@ -156,7 +192,9 @@ DockingRun RunDocking(const sim::Scenario& scenario,
       }
     }
 
+    const docking::Phase phase_before = docker.phase();
     const docking::Command cmd = docker.Step(obs);
+    AddPhaseTime(docker.done() ? phase_before : docker.phase(), cmd, dt, &run.phases);
 
     if (!verify_seen && docker.phase() == docking::Phase::kVerify && true_shelf) {
       verify_seen = true;

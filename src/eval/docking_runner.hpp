@@ -58,6 +58,21 @@ struct RecordFrame {
   std::vector<std::string> events;
 };
 
+/// Where the time of one run went, per Docker phase (seconds of simulated time). The sum of all
+/// but `approach_s` is DockingRun::time_s.
+struct PhaseTimes {
+  double approach_s = 0.0;    ///< [s] to the docking area's entry (not part of time_s)
+  double dock_s = 0.0;        ///< [s] driving in the docking area (both legs for the baseline)
+  double final_slow_s = 0.0;  ///< [s] part of dock_s below 0.1 m/s: the final stop(s)
+  double stand_s = 0.0;       ///< [s] baseline: standing at the parking spot to recognise
+  double verify_s = 0.0;      ///< [s] code checks (camera frames), all tries
+  double adjust_s = 0.0;      ///< [s] fine adjustments, all tries
+  double lift_s = 0.0;        ///< [s]
+  double abort_s = 0.0;       ///< [s] braking after a failure
+  int code_checks = 0;        ///< code checks made (1 + adjustments that were re-checked)
+  int adjustments = 0;        ///< fine adjustments made
+};
+
 struct DockingRun {
   docking::Outcome outcome;
   docking::Method method = docking::Method::kContinuous;
@@ -68,6 +83,7 @@ struct DockingRun {
   int replans = 0;
   int detections = 0;
   double min_leg_clearance_m = 1e9;  ///< [m] true footprint to true legs over the whole run
+  PhaseTimes phases;
   std::vector<RecordFrame> record;
 };
 

@@ -18,6 +18,17 @@ AbsErrorStats Stats(const std::vector<double>& values) {
   return s;
 }
 
+void AddPhases(const PhaseTimes& t, PhaseTimes* sum) {
+  sum->approach_s += t.approach_s;
+  sum->dock_s += t.dock_s;
+  sum->final_slow_s += t.final_slow_s;
+  sum->stand_s += t.stand_s;
+  sum->verify_s += t.verify_s;
+  sum->adjust_s += t.adjust_s;
+  sum->lift_s += t.lift_s;
+  sum->abort_s += t.abort_s;
+}
+
 }  // namespace
 
 double Quantile(std::vector<double> values, double q) {
@@ -40,6 +51,9 @@ MethodSummary Summarise(const std::vector<DockingRun>& runs, const AccuracyBands
     if (r.outcome.ok()) {
       ++s.successes;
       time_sum += r.time_s;
+      AddPhases(r.phases, &s.mean_phases);
+      s.mean_code_checks += r.phases.code_checks;
+      s.mean_adjustments += r.phases.adjustments;
     }
     if (r.error_before_check.valid) {
       const PoseError& e = r.error_before_check;
@@ -59,6 +73,16 @@ MethodSummary Summarise(const std::vector<DockingRun>& runs, const AccuracyBands
     }
   }
   s.mean_time_s = s.successes > 0 ? time_sum / s.successes : 0.0;
+  if (s.successes > 0) {
+    const double n = s.successes;
+    PhaseTimes& m = s.mean_phases;
+    for (double* v : {&m.approach_s, &m.dock_s, &m.final_slow_s, &m.stand_s, &m.verify_s,
+                      &m.adjust_s, &m.lift_s, &m.abort_s}) {
+      *v /= n;
+    }
+    s.mean_code_checks /= n;
+    s.mean_adjustments /= n;
+  }
   s.before_x = Stats(bx);
   s.before_y = Stats(by);
   s.before_yaw = Stats(byaw);

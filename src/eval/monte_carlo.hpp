@@ -33,6 +33,9 @@ struct MethodSummary {
   double within_before = 0.0;  ///< share of checked runs inside the before band (x, y and yaw)
   double within_after = 0.0;   ///< share of lifted runs inside the after band
   double min_leg_clearance_m = 1e9;  ///< [m] worst over all runs
+  PhaseTimes mean_phases;            ///< mean over successful runs (counts as means too)
+  double mean_code_checks = 0.0;     ///< per successful run
+  double mean_adjustments = 0.0;     ///< per successful run
 };
 
 MethodSummary Summarise(const std::vector<DockingRun>& runs, const AccuracyBands& bands = {});

@@ -19,6 +19,13 @@ json ErrorJson(const eval::PoseError& e) {
 
 }  // namespace
 
+json PhaseTimesJson(const eval::PhaseTimes& t) {
+  return {{"approach_s", t.approach_s},  {"dock_s", t.dock_s},     {"final_slow_s", t.final_slow_s},
+          {"stand_s", t.stand_s},        {"verify_s", t.verify_s}, {"adjust_s", t.adjust_s},
+          {"lift_s", t.lift_s},          {"abort_s", t.abort_s},   {"code_checks", t.code_checks},
+          {"adjustments", t.adjustments}};
+}
+
 json DockingRunToJson(const eval::DockingRun& run) {
   json j;
   j["result"] = std::string(docking::ToString(run.outcome.code));
@@ -32,6 +39,7 @@ json DockingRunToJson(const eval::DockingRun& run) {
       run.min_leg_clearance_m < 1e8 ? json(run.min_leg_clearance_m) : json(nullptr);
   j["method"] = std::string(docking::ToString(run.method));
   j["seed"] = run.seed;
+  j["phases"] = PhaseTimesJson(run.phases);
   return j;
 }
 

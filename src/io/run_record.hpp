@@ -10,7 +10,13 @@
 //    "cmd": {"v", "w"}, optional "scan": [[x, y], ...] (this step's scan in the world frame,
 //    placed with the true pose), "detection": {...} (last accepted detection), "shelf": {...}
 //    (fused shelf estimate), "path": [[x, y, yaw], ...] (when re-planned), "events": [text]}
-//   {"type": "summary", ...the `shelfdock dock` result object...}
+//   {"type": "summary", ...the `shelfdock dock` result object...}: "result" ("success" or the
+//    failure's snake_case name), "reason", "time_s" (docking area entry to end of lift),
+//    "error_before_check" / "error_after_check" ({"x","y","yaw"} against the true shelf centre
+//    in the shelf frame, null when not reached), "replans", "detections", "min_leg_clearance_m",
+//    "method", "seed", "phases": {"approach_s" (before the entry, not in time_s), "dock_s",
+//    "final_slow_s" (part of dock_s below 0.1 m/s), "stand_s" (baseline parking), "verify_s",
+//    "adjust_s", "lift_s", "abort_s", "code_checks", "adjustments"}
 //
 // Frames: everything is in the world (= map) frame. What the robot keeps in its odometry frame
 // (detection, fused shelf, path) is drawn where the robot believes it is relative to itself,
@@ -24,6 +30,10 @@
 #include "sim/scenario.hpp"
 
 namespace shelfdock::io {
+
+/// Per-phase times of a run (eval::PhaseTimes) as {"approach_s", "dock_s", "final_slow_s",
+/// "stand_s", "verify_s", "adjust_s", "lift_s", "abort_s", "code_checks", "adjustments"}.
+nlohmann::json PhaseTimesJson(const eval::PhaseTimes& times);
 
 /// The `shelfdock dock` result object (result, reason, time_s, errors, ...).
 nlohmann::json DockingRunToJson(const eval::DockingRun& run);
