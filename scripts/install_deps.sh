@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build ccache clang-format pkg-config
+  build-essential cmake ninja-build ccache clang-format pkg-config python3
   libeigen3-dev libceres-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev libapriltag-dev
   librosbag-storage-dev libsensor-msgs-dev pluginlib-dev
