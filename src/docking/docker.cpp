@@ -434,12 +434,12 @@ Command Docker::Step(const Observations& obs) {
       StepStand(obs, &cmd);
       break;
     case Phase::kVerify:
-      if (obs.t_s - phase_start_t_ >= 0.1) StepVerify(obs, &cmd);  // let the robot settle
+      if (obs.t_s - phase_start_t_ >= config_.verify.settle_s) StepVerify(obs, &cmd);
       cmd.camera_on = phase_ == Phase::kVerify || cmd.camera_on;
       break;
     case Phase::kAdjust: {
       bool finished = false;
-      cmd.velocity = adjust_.Update(obs.T_odom_base, &finished);
+      cmd.velocity = adjust_.Update(obs.T_odom_base, dt, &finished);
       if (finished) {
         phase_ = Phase::kVerify;
         phase_start_t_ = obs.t_s;

@@ -17,7 +17,7 @@ struct PlannerConfig {
 
 /// Path-tracking controller (path_tracker.hpp).
 struct ControllerConfig {
-  double max_speed_mps = 0.45;          ///< [m/s] cruise speed in the docking area (paper: ~0.4)
+  double max_speed_mps = 0.4;           ///< [m/s] cruise speed in the docking area (paper: ~0.4)
   double approach_speed_mps = 0.6;      ///< [m/s] cruise speed during the approach
   double max_accel_mps2 = 0.5;          ///< [m/s^2]
   double max_decel_mps2 = 0.4;          ///< [m/s^2] used by the stopping profile
@@ -54,17 +54,22 @@ struct SafetyConfig {
   double leg_exclusion_m = 0.08;      ///< [m] scan points this near an expected leg are the shelf's
 };
 
-/// Code check under the shelf and fine adjustment.
+/// Code check under the shelf and fine adjustment (fine_adjust.hpp). The tolerance leaves room
+/// for the camera's own error (about 1 mm, 1.5 mrad at 3 frames) inside the 3 mm / 5 mrad band.
 struct VerifyConfig {
-  int frames = 5;                    ///< camera frames averaged per check
+  int frames = 3;                    ///< camera frames averaged per check (15 Hz camera)
   int max_missing_frames = 20;       ///< frames without a code before code_not_found
-  double tolerance_xy_m = 0.0025;    ///< [m] accepted offset of the code
-  double tolerance_yaw_rad = 0.004;  ///< [rad]
+  double settle_s = 0.1;             ///< [s] standing still before the first frame is used
+  double tolerance_xy_m = 0.0018;    ///< [m] accepted offset of the code along x and y
+  double tolerance_yaw_rad = 0.003;  ///< [rad]
   int max_adjust_tries = 3;
-  double backoff_m = 0.12;             ///< [m] reverse this far before a lateral correction
-  double adjust_speed_mps = 0.08;      ///< [m/s]
-  double adjust_yaw_rate_radps = 0.3;  ///< [rad/s]
-  double max_correction_m = 0.05;      ///< [m] larger offsets are not corrected blind
+  double lateral_tolerance_m = 0.0005;   ///< [m] below this a lateral error needs no turn
+  double max_lever_angle_rad = 0.15;     ///< [rad] largest turn toward the corrected point
+  double adjust_speed_mps = 0.1;         ///< [m/s]
+  double adjust_accel_mps2 = 0.45;       ///< [m/s^2] braking of each straight move
+  double adjust_yaw_rate_radps = 0.5;    ///< [rad/s]
+  double adjust_yaw_accel_radps2 = 1.8;  ///< [rad/s^2] braking of each rotation
+  double max_correction_m = 0.05;        ///< [m] larger offsets are not corrected blind
 };
 
 /// The stop-and-recognise baseline.

@@ -66,9 +66,13 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("tolerance_xy_m", k.tolerance_xy_m);
     f.Read("tolerance_yaw_rad", k.tolerance_yaw_rad);
     f.Read("max_adjust_tries", k.max_adjust_tries);
-    f.Read("backoff_m", k.backoff_m);
+    f.Read("settle_s", k.settle_s);
+    f.Read("lateral_tolerance_m", k.lateral_tolerance_m);
+    f.Read("max_lever_angle_rad", k.max_lever_angle_rad);
     f.Read("adjust_speed_mps", k.adjust_speed_mps);
+    f.Read("adjust_accel_mps2", k.adjust_accel_mps2);
     f.Read("adjust_yaw_rate_radps", k.adjust_yaw_rate_radps);
+    f.Read("adjust_yaw_accel_radps2", k.adjust_yaw_accel_radps2);
     f.Read("max_correction_m", k.max_correction_m);
     f.RejectUnknown();
   }
