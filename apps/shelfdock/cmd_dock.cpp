@@ -27,6 +27,7 @@ struct DockOptions {
   std::uint64_t seed = 1;
   int runs = 100;
   double blackout_s = -1.0;
+  bool camera_blind = false;
 };
 
 docking::Method ParseMethod(const std::string& text) {
@@ -39,6 +40,7 @@ eval::RunConfig MakeRunConfig(const DockOptions& opt) {
   eval::RunConfig config;
   if (!opt.config.empty()) config.docking = io::ReadDockingConfig(opt.config);
   config.blackout_start_s = opt.blackout_s;
+  config.camera_blind = opt.camera_blind;
   return config;
 }
 
@@ -116,6 +118,8 @@ void AddCommonOptions(CLI::App* cmd, DockOptions* opt) {
   cmd->add_option("--config", opt->config, "docking config YAML (e.g. config/docking.yaml)");
   cmd->add_option("--lidar-blackout", opt->blackout_s,
                   "failure injection: no scans from this many seconds after the entry");
+  cmd->add_flag("--camera-blind", opt->camera_blind,
+                "failure injection: the upward camera never sees a code");
 }
 
 }  // namespace

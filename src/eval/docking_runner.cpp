@@ -184,7 +184,9 @@ DockingRun RunDocking(const sim::Scenario& scenario,
     if (docker.phase() == docking::Phase::kVerify && t + 1e-9 >= next_camera_t) {
       next_camera_t = t + 1.0 / config.camera_rate_hz;
       obs.camera_frame = true;
-      if (const auto above = ShelfAbove(scenario.world, robot.T_world_base())) {
+      const auto above =
+          config.camera_blind ? std::nullopt : ShelfAbove(scenario.world, robot.T_world_base());
+      if (above) {
         const geometry::GrayImage image = sim::RenderMarker(
             config.camera, above->id, sim::TagInCamera(robot.T_world_base(), above->T_world_shelf),
             seed * 1000003 + static_cast<std::uint64_t>(++camera_frames));

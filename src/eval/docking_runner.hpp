@@ -32,6 +32,9 @@ struct RunConfig {
   /// area's entry, for blackout_duration_s. Negative start: no blackout.
   double blackout_start_s = -1.0;
   double blackout_duration_s = 1e9;
+  /// Camera failure (a failure injection): frames keep arriving but show no code, as with a
+  /// shelf whose code is missing or a covered lens.
+  bool camera_blind = false;
   bool record = false;  ///< keep one RecordFrame per control step
 };
 

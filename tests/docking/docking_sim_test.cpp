@@ -7,6 +7,7 @@
 
 #include "eval/docking_runner.hpp"
 #include "eval/monte_carlo.hpp"
+#include "io/docking_config_yaml.hpp"
 #include "io/models_yaml.hpp"
 #include "io/scenario_yaml.hpp"
 
@@ -49,24 +50,47 @@ TEST(DockingSim, EachFailureIsReportedWithItsReason) {
   const Fixture f;
   struct Case {
     const char* scenario;
-    double blackout_s;
     OutcomeCode expected;
+    double blackout_s = -1.0;      ///< LiDAR blackout from this long after the entry
+    bool camera_blind = false;     ///< the camera never sees a code
+    const char* config = nullptr;  ///< docking config YAML (tests/data)
   };
+  const char* kPaper = "config/scenarios/paper_docking.yaml";
   const Case cases[] = {
-      {"tests/data/docking_shelf_absent.yaml", -1.0, OutcomeCode::kShelfNotFound},
-      {"tests/data/docking_wrong_code.yaml", -1.0, OutcomeCode::kWrongShelf},
-      {"tests/data/docking_person_crossing.yaml", -1.0, OutcomeCode::kWouldCollide},
-      {"config/scenarios/paper_docking.yaml", 3.0, OutcomeCode::kDetectionLost},
+      {"tests/data/docking_shelf_absent.yaml", OutcomeCode::kShelfNotFound},
+      {"tests/data/docking_wrong_code.yaml", OutcomeCode::kWrongShelf},
+      {"tests/data/docking_person_crossing.yaml", OutcomeCode::kWouldCollide},
+      {kPaper, OutcomeCode::kDetectionLost, 3.0},
+      {kPaper, OutcomeCode::kCodeNotFound, -1.0, true},
+      {kPaper, OutcomeCode::kTimeout, -1.0, false, "tests/data/docking_config_tiny_timeout.yaml"},
+      {kPaper, OutcomeCode::kTooManyReplans, -1.0, false,
+       "tests/data/docking_config_no_replans.yaml"},
   };
   for (const Case& c : cases) {
     RunConfig config;
     config.blackout_start_s = c.blackout_s;
+    config.camera_blind = c.camera_blind;
+    if (c.config != nullptr) config.docking = io::ReadDockingConfig(kRoot + "/" + c.config);
     const DockingRun run = RunDocking(f.Load(c.scenario), f.models, Method::kContinuous, 1, config);
-    EXPECT_EQ(run.outcome.code, c.expected) << c.scenario << ": " << run.outcome.reason;
+    const std::string name = std::string(c.scenario) + " " + (c.config ? c.config : "") +
+                             (c.camera_blind ? " camera blind" : "");
+    EXPECT_EQ(run.outcome.code, c.expected) << name << ": " << run.outcome.reason;
     EXPECT_FALSE(run.outcome.reason.empty());
-    EXPECT_GT(run.min_leg_clearance_m, 0.05) << c.scenario;
-    EXPECT_FALSE(run.error_after_check.valid) << "no lift after a failure";
+    EXPECT_GT(run.min_leg_clearance_m, 0.05) << name;
+    EXPECT_FALSE(run.error_after_check.valid) << name << ": no lift after a failure";
+    EXPECT_LT(run.time_s, config.docking.timeout_s + 5.0) << name << ": never a hang";
   }
+}
+
+TEST(DockingSim, TheBaselineFailsTheSameWayWithoutACode) {
+  const Fixture f;
+  RunConfig config;
+  config.camera_blind = true;
+  const DockingRun run = RunDocking(f.Load("config/scenarios/paper_docking.yaml"), f.models,
+                                    Method::kStopAndRecognise, 2, config);
+  EXPECT_EQ(run.outcome.code, OutcomeCode::kCodeNotFound) << run.outcome.reason;
+  EXPECT_TRUE(run.error_before_check.valid) << "it reached the check";
+  EXPECT_FALSE(run.error_after_check.valid);
 }
 
 TEST(DockingSim, MonteCarloMeetsThePapersAccuracyAndBeatsTheBaseline) {
