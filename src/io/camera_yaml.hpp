@@ -14,12 +14,11 @@ struct CameraSetup {
   perception::MarkerDetectorConfig detector;
 };
 
-/// Reads a camera file: maps `intrinsics` (width, height, fx, fy, cx, cy), `code` (size,
-/// height), `render` (supersample, blur_sigma, noise_std, exposure, white_level, black_level,
-/// background_level) and `detector` (quad_decimate, quad_sigma, refine_edges,
-/// decode_sharpening, max_hamming, min_decision_margin, max_height_error). Every key is
-/// optional (the structs hold the defaults), units are px, m and grey levels. Throws
-/// InputError naming the file and the key.
+/// Reads a camera file: maps `intrinsics` (geometry::CameraIntrinsics), `code` (the code fields
+/// of geometry::UpwardCamera), `render` (sim::CameraConfig) and `detector`
+/// (perception::MarkerDetectorConfig), each key named exactly as its struct field (`fx_px`,
+/// `code_size_m`, `blur_sigma_px`, ...). Every key is optional (the structs hold the defaults),
+/// units are px, m and grey levels. Throws InputError naming the file and the key.
 CameraSetup ReadCameraSetup(const std::string& path);
 
 }  // namespace shelfdock::io

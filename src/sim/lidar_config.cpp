@@ -12,21 +12,21 @@ std::optional<ConfigError> Validate(const LidarConfig& c) {
   auto fail = [](const char* field, const char* req) {
     return std::optional<ConfigError>(ConfigError{field, req});
   };
-  if (!(c.angle_increment_rad > 0.0)) return fail("angle_increment", "> 0");
+  if (!(c.angle_increment_rad > 0.0)) return fail("angle_increment_rad", "> 0");
   if (c.num_beams < 1 || c.num_beams > 100000) return fail("num_beams", "in [1, 100000]");
-  if (!(c.frequency_hz > 0.0)) return fail("frequency", "> 0");
+  if (!(c.frequency_hz > 0.0)) return fail("frequency_hz", "> 0");
   if (!(c.sweep_fraction >= 0.0 && c.sweep_fraction <= 1.0)) {
     return fail("sweep_fraction", "in [0, 1]");
   }
-  if (!(c.range_min_m >= 0.0)) return fail("range_min", ">= 0");
-  if (!(c.range_max_m > c.range_min_m)) return fail("range_max", "> range_min");
-  if (!(c.range_noise_sigma_m >= 0.0)) return fail("range_noise_sigma", ">= 0");
+  if (!(c.range_min_m >= 0.0)) return fail("range_min_m", ">= 0");
+  if (!(c.range_max_m > c.range_min_m)) return fail("range_max_m", "> range_min");
+  if (!(c.range_noise_sigma_m >= 0.0)) return fail("range_noise_sigma_m", ">= 0");
   if (!(c.range_noise_per_m >= 0.0)) return fail("range_noise_per_m", ">= 0");
-  if (!(c.quantisation_m > 0.0)) return fail("quantisation", "> 0");
+  if (!(c.quantisation_m > 0.0)) return fail("quantisation_m", "> 0");
   if (!(c.beam_divergence_rad >= 0.0 && c.beam_divergence_rad < 0.2)) {
-    return fail("beam_divergence", "in [0, 0.2) rad");
+    return fail("beam_divergence_rad", "in [0, 0.2) rad");
   }
-  if (!(c.beam_aperture_m >= 0.0)) return fail("beam_aperture", ">= 0");
+  if (!(c.beam_aperture_m >= 0.0)) return fail("beam_aperture_m", ">= 0");
   if (c.footprint_rays < 3 || c.footprint_rays > 31 || c.footprint_rays % 2 == 0) {
     return fail("footprint_rays", "an odd number in [3, 31]");
   }
@@ -44,10 +44,10 @@ std::optional<ConfigError> Validate(const LidarConfig& c) {
   }
   if (!(c.intensity_scale >= 0.0)) return fail("intensity_scale", ">= 0");
   if (!(c.intensity_noise_rel >= 0.0)) return fail("intensity_noise_rel", ">= 0");
-  if (!(c.mount_height_m > 0.0)) return fail("mount_height", "> 0");
-  if (!(std::abs(c.tilt_pitch_rad) < 0.5)) return fail("tilt_pitch", "|tilt| < 0.5 rad");
-  if (!(std::abs(c.tilt_roll_rad) < 0.5)) return fail("tilt_roll", "|tilt| < 0.5 rad");
-  if (!(std::abs(c.yaw_offset_rad) < 0.5)) return fail("yaw_offset", "|offset| < 0.5 rad");
+  if (!(c.mount_height_m > 0.0)) return fail("mount_height_m", "> 0");
+  if (!(std::abs(c.tilt_pitch_rad) < 0.5)) return fail("tilt_pitch_rad", "|tilt| < 0.5 rad");
+  if (!(std::abs(c.tilt_roll_rad) < 0.5)) return fail("tilt_roll_rad", "|tilt| < 0.5 rad");
+  if (!(std::abs(c.yaw_offset_rad) < 0.5)) return fail("yaw_offset_rad", "|offset| < 0.5 rad");
   if (!(c.floor_reflectivity >= 0.0 && c.floor_reflectivity <= 1.0)) {
     return fail("floor_reflectivity", "in [0, 1]");
   }

@@ -33,8 +33,8 @@ TEST(CameraYaml, TheShippedFileWritesOutTheDefaults) {
 }
 
 TEST(CameraYaml, ReadsKeysAndKeepsDefaultsForTheRest) {
-  const CameraSetup setup =
-      ReadCameraSetup(WriteYaml("partial.yaml", "code: {size: 0.12}\nrender: {noise_std: 0}\n"));
+  const CameraSetup setup = ReadCameraSetup(
+      WriteYaml("partial.yaml", "code: {code_size_m: 0.12}\nrender: {noise_std: 0}\n"));
   EXPECT_EQ(setup.camera.camera.code_size_m, 0.12);
   EXPECT_EQ(setup.camera.noise_std, 0.0);
   EXPECT_EQ(setup.camera.camera.code_height_m, sim::CameraConfig{}.camera.code_height_m);
@@ -49,13 +49,13 @@ TEST(CameraYaml, ErrorsNameTheKey) {
     }
     return "(accepted)";
   };
-  EXPECT_EQ(field_of("intrinsics: {fx: 0}\n"), "intrinsics.fx");
-  EXPECT_EQ(field_of("code: {size: -0.08}\n"), "code.size");
+  EXPECT_EQ(field_of("intrinsics: {fx_px: 0}\n"), "intrinsics.fx_px");
+  EXPECT_EQ(field_of("code: {code_size_m: -0.08}\n"), "code.code_size_m");
   EXPECT_EQ(field_of("render: {blurr: 1}\n"), "render.blurr");
   EXPECT_EQ(field_of("render: {white_level: 20, black_level: 30}\n"), "render.white_level");
   EXPECT_EQ(field_of("detector: {max_hamming: 3}\n"), "detector.max_hamming");
   EXPECT_EQ(field_of("lens: {}\n"), "lens");
-  EXPECT_EQ(field_of("code: {height: tall}\n"), "code.height");
+  EXPECT_EQ(field_of("code: {code_height_m: tall}\n"), "code.code_height_m");
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ TEST(RobotYaml, TheShippedFileWritesOutTheDefaults) {
 
 TEST(RobotYaml, ReadsNestedKeysAndNamesBadOnes) {
   const sim::DiffDriveConfig c =
-      ReadRobotConfig(WriteYaml("max_v: 0.4\nodometry: {slip_std: 0}\n"));
+      ReadRobotConfig(WriteYaml("max_v_mps: 0.4\nodometry: {slip_std_m_per_sqrt_m: 0}\n"));
   EXPECT_EQ(c.max_v_mps, 0.4);
   EXPECT_EQ(c.odometry.slip_std_m_per_sqrt_m, 0.0);
   EXPECT_EQ(c.odometry.wheel_scale_std, sim::OdometryNoiseConfig{}.wheel_scale_std);
@@ -44,8 +44,9 @@ TEST(RobotYaml, ReadsNestedKeysAndNamesBadOnes) {
     }
     return "(accepted)";
   };
-  EXPECT_EQ(field_of("max_v: 0\n"), "max_v");
-  EXPECT_EQ(field_of("localisation: {bias_time_constant: 0}\n"), "localisation.bias_time_constant");
+  EXPECT_EQ(field_of("max_v_mps: 0\n"), "max_v_mps");
+  EXPECT_EQ(field_of("localisation: {bias_time_constant_s: 0}\n"),
+            "localisation.bias_time_constant_s");
   EXPECT_EQ(field_of("odometry: {wheel_scale: 0.1}\n"), "odometry.wheel_scale");
   EXPECT_EQ(field_of("wheelbase: 0.5\n"), "wheelbase");
 }

@@ -122,12 +122,12 @@ TEST(LidarConfigYamlTest, PresetsLoadAndBadKeysAreNamed) {
   EXPECT_NEAR(ust.range_max_m, 10.0, 1e-12);
   EXPECT_EQ(ReadLidarConfig(kRoot + "/config/lidar_tim571.yaml").num_beams, 811);
 
-  const std::string bad = WriteTemp("lidar_bad", "range_max: 0.01\n");
+  const std::string bad = WriteTemp("lidar_bad", "range_max_m: 0.01\n");
   try {
     ReadLidarConfig(bad);
     ADD_FAILURE() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.field(), "range_max");
+    EXPECT_EQ(e.field(), "range_max_m");
   }
   const std::string unknown = WriteTemp("lidar_unknown", "beams: 10\n");
   EXPECT_THROW(ReadLidarConfig(unknown), InputError);
