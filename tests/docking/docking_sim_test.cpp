@@ -102,17 +102,36 @@ TEST(DockingSim, MonteCarloMeetsThePapersAccuracyAndBeatsTheBaseline) {
     cont.push_back(RunDocking(s, f.models, Method::kContinuous, seed, RunConfig{}));
     base.push_back(RunDocking(s, f.models, Method::kStopAndRecognise, seed, RunConfig{}));
   }
-  const MethodSummary c = Summarise(cont);
-  const MethodSummary b = Summarise(base);
+  const AccuracyBands bands;
+  const MethodSummary c = Summarise(cont, bands);
+  const MethodSummary b = Summarise(base, bands);
   EXPECT_EQ(c.successes, kSeeds);
   EXPECT_EQ(b.successes, kSeeds);
+  // The paper's result (section 4): before the code check, x and y within 10 mm and yaw within
+  // 14 mrad for 95% of the runs; the issue's band after the check for every run.
+  EXPECT_LE(c.before_x.p95, bands.before_xy_m);
+  EXPECT_LE(c.before_y.p95, bands.before_xy_m);
+  EXPECT_LE(c.before_yaw.p95, bands.before_yaw_rad);
   EXPECT_GE(c.within_before, 0.95);
-  EXPECT_GE(c.within_after, 0.95);
-  EXPECT_GT(c.min_leg_clearance_m, 0.05);
-  // The issue's target is 25% faster; measured ~18% (see the closing report): assert faster.
-  EXPECT_LT(c.mean_time_s, b.mean_time_s) << c.mean_time_s << " vs " << b.mean_time_s;
+  for (const MethodSummary* m : {&c, &b}) {
+    EXPECT_LE(m->after_x.max, bands.after_xy_m);
+    EXPECT_LE(m->after_y.max, bands.after_xy_m);
+    EXPECT_LE(m->after_yaw.max, bands.after_yaw_rad);
+    EXPECT_GT(m->min_leg_clearance_m, 0.05);
+  }
+  // Time on the same seeds. The issue asks for 25% (the paper: 25.9%, with 11.21 s ~ 4.5 m at
+  // 0.4 m/s, i.e. without lift or code check). Here both times include the 2 s lift and the
+  // shared code check, and the baseline's only extra cost is the stop (about 0.9 s of braking
+  // and re-accelerating) plus standing to recognise (settle_s + standing_scans): measured ~13%.
+  // Asserted: at least 10% faster on average, and on no seed more than 0.5 s slower (one
+  // method may need a fine adjustment where the other does not).
+  EXPECT_LE(c.mean_time_s, 0.90 * b.mean_time_s) << c.mean_time_s << " vs " << b.mean_time_s;
+  for (int i = 0; i < kSeeds; ++i) {
+    EXPECT_LT(cont[i].time_s, base[i].time_s + 0.5) << "seed " << cont[i].seed;
+  }
   // No run can beat a robot that knows the true shelf pose and never stops to look.
-  EXPECT_GT(c.mean_time_s, PerfectKnowledgeTime(s, RunConfig{}) - 1e-9);
+  const double perfect = PerfectKnowledgeTime(s, RunConfig{});
+  for (const DockingRun& r : cont) EXPECT_GT(r.time_s, perfect - 1e-9) << "seed " << r.seed;
 }
 
 }  // namespace
