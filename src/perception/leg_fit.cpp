@@ -1,9 +1,11 @@
 #include "perception/leg_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include <ceres/ceres.h>
+#include <ceres/tiny_solver.h>
+#include <ceres/tiny_solver_autodiff_function.h>
 #include <Eigen/Eigenvalues>
 
 #include "geometry/angle.hpp"
@@ -11,78 +13,84 @@
 namespace shelfdock::perception {
 namespace {
 
-// Round leg. The printed Eq. 7, |dx^2 + dy^2 - l_h/2|, mixes a squared distance with a radius
-// (a typo); its geometric intent is the distance of the point from the circle: |p - c| - r.
-struct CircleResidual {
-  CircleResidual(Eigen::Vector2d p, double radius) : p_(std::move(p)), radius_(radius) {}
-  template <typename T>
-  bool operator()(const T* const c, T* residual) const {
-    const T dx = T(p_.x()) - c[0];
-    const T dy = T(p_.y()) - c[1];
-    residual[0] = ceres::sqrt(dx * dx + dy * dy + T(1e-12)) - T(radius_);
-    return true;
+// Residuals of one beam against a leg section, by ray casting from the sensor (the origin):
+// (measured range - predicted range of the first hit, miss distance). LiDAR noise is along the
+// beam, so the range residual is the maximum-likelihood one; the paper's point-to-surface
+// distances (Eq. 5, Eq. 7) are biased toward the sensor when the noise is comparable to the leg
+// radius (|p - c| is convex in the noise) and pick the wrong face near a corner.
+// A beam that misses the predicted section gets the range residual at its closest approach
+// plus the miss distance, so the residual is continuous across the silhouette.
+
+// Round leg: b = u.c along the beam, e = u x c across it; hit at t = b - sqrt(r^2 - e^2).
+template <typename T>
+void CircleRayResidual(const T* c, double ux, double uy, double range, double radius, T* out) {
+  const T b = T(ux) * c[0] + T(uy) * c[1];
+  const T e = T(ux) * c[1] - T(uy) * c[0];
+  const T e_abs = e < T(0) ? -e : e;
+  if (e_abs < T(radius)) {
+    // The floor keeps the derivative finite at the tangent.
+    const T h2 = T(radius * radius) - e * e;
+    const T h = ceres::sqrt(h2 > T(1e-8) ? h2 : T(1e-8));
+    out[0] = T(range) - (b - h);
+    out[1] = T(0);
+  } else {
+    out[0] = T(range) - b;
+    out[1] = e_abs - T(radius);
   }
-  Eigen::Vector2d p_;
-  double radius_;
-};
+}
 
-// Rectangular leg. The printed Eq. 5 takes absolute values before rotating into the leg's axes
-// and compares against G_h/2 on both lines (typos); its intent is the distance of the point to
-// the nearer of the faces it can lie on. Here the point q = R(-alpha) (p - c) is compared with
-// each face of the G_h x G_w section whose outward normal faces the sensor (a hidden face
-// cannot be hit), giving (normal offset, overshoot past the face's ends) for the nearest one.
-struct BoxFaceResidual {
-  BoxFaceResidual(Eigen::Vector2d p, double axis_yaw, double half_x, double half_y)
-      : p_(std::move(p)),
-        c_(std::cos(axis_yaw)),
-        s_(std::sin(axis_yaw)),
-        hx_(half_x),
-        hy_(half_y) {}
+// Rectangular leg: slab test in the leg's axes (x along G_h).
+template <typename T>
+void BoxRayResidual(const T* c, double ux, double uy, double range, double cos_a, double sin_a,
+                    double half_x, double half_y, T* out) {
+  // Ray origin (the sensor) and direction in the leg's axes.
+  const T o[2] = {-(T(cos_a) * c[0] + T(sin_a) * c[1]), -(T(-sin_a) * c[0] + T(cos_a) * c[1])};
+  const double d[2] = {cos_a * ux + sin_a * uy, -sin_a * ux + cos_a * uy};
+  const double h[2] = {half_x, half_y};
+  T t_in(-1e9), t_out(1e9);
+  for (int k = 0; k < 2; ++k) {
+    const double dk = std::abs(d[k]) < 1e-9 ? (d[k] < 0 ? -1e-9 : 1e-9) : d[k];
+    T ta = (T(-h[k]) - o[k]) / T(dk);
+    T tb = (T(h[k]) - o[k]) / T(dk);
+    if (tb < ta) std::swap(ta, tb);
+    if (ta > t_in) t_in = ta;
+    if (tb < t_out) t_out = tb;
+  }
+  out[0] = T(range) - t_in;
+  out[1] = t_in > t_out ? t_in - t_out : T(0);
+}
+
+struct LegRayCost {
+  const std::vector<ScanPoint>* points;
+  const double* weights;  // sqrt of the IRLS weight per point
+  bool round;
+  double radius, cos_a, sin_a, half_x, half_y;
+  Eigen::Vector2d prior;
+  double prior_weight;
+
+  int NumResiduals() const { return 2 * static_cast<int>(points->size()) + 2; }
 
   template <typename T>
-  bool operator()(const T* const c, T* residual) const {
-    const T dx = T(p_.x()) - c[0];
-    const T dy = T(p_.y()) - c[1];
-    const T qx = T(c_) * dx + T(s_) * dy;  // point in the leg's axes
-    const T qy = T(-s_) * dx + T(c_) * dy;
-    const T ox = T(c_) * (-c[0]) + T(s_) * (-c[1]);  // sensor (origin) in the leg's axes
-    const T oy = T(-s_) * (-c[0]) + T(c_) * (-c[1]);
-    bool found = false;
-    T best_n(0), best_t(0);
-    auto consider = [&](const T& normal, const T& tangent, double half_tangent) {
-      const T over = ceres::abs(tangent) - T(half_tangent);
-      const T t = over > T(0) ? over : T(0);
-      if (!found || normal * normal + t * t < best_n * best_n + best_t * best_t) {
-        best_n = normal;
-        best_t = t;
-        found = true;
+  bool operator()(const T* c, T* residual) const {
+    const auto n = points->size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const ScanPoint& q = (*points)[i];
+      const double ux = std::cos(q.angle), uy = std::sin(q.angle);
+      T* r = residual + 2 * i;
+      if (round) {
+        CircleRayResidual(c, ux, uy, q.range, radius, r);
+      } else {
+        BoxRayResidual(c, ux, uy, q.range, cos_a, sin_a, half_x, half_y, r);
       }
-    };
-    if (ox > T(hx_)) consider(qx - T(hx_), qy, hy_);
-    if (ox < T(-hx_)) consider(-qx - T(hx_), qy, hy_);
-    if (oy > T(hy_)) consider(qy - T(hy_), qx, hx_);
-    if (oy < T(-hy_)) consider(-qy - T(hy_), qx, hx_);
-    if (!found) consider(ceres::abs(qx) - T(hx_), qy, hy_);  // sensor inside the section
-    residual[0] = best_n;
-    residual[1] = best_t;
+      r[0] *= T(weights[i]);
+      r[1] *= T(weights[i]);
+    }
+    // Weak pull toward the start: one visible face fixes the centre only across the face (and
+    // one point only along its beam), so along the face the bias-corrected centroid decides.
+    residual[2 * n] = T(prior_weight) * (c[0] - T(prior.x()));
+    residual[2 * n + 1] = T(prior_weight) * (c[1] - T(prior.y()));
     return true;
   }
-  Eigen::Vector2d p_;
-  double c_, s_, hx_, hy_;
-};
-
-// Weak pull toward the bias-corrected centroid: one visible face fixes the centre only across
-// the face, so along it the centroid decides.
-struct PriorResidual {
-  PriorResidual(Eigen::Vector2d c0, double weight) : c0_(std::move(c0)), w_(weight) {}
-  template <typename T>
-  bool operator()(const T* const c, T* residual) const {
-    residual[0] = T(w_) * (c[0] - T(c0_.x()));
-    residual[1] = T(w_) * (c[1] - T(c0_.y()));
-    return true;
-  }
-  Eigen::Vector2d c0_;
-  double w_;
 };
 
 }  // namespace
@@ -123,48 +131,68 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
     out.axis_from_pca = true;
   }
 
-  // Start behind the centroid: visible points lie on the near side of the leg.
+  // Start behind the centroid: visible points lie on the near side of the leg. For a circle
+  // sampled uniformly across its silhouette the centroid lies pi/4 r in front of the centre.
   const bool round = leg.shape == geometry::LegShape::kCircle;
   const double depth = round ? 0.8 * leg.Radius() : 0.85 * 0.25 * (leg.length_m + leg.width_m);
   const Eigen::Vector2d view =
       centroid.norm() > 1e-9 ? centroid.normalized() : Eigen::Vector2d::UnitX();
   const Eigen::Vector2d c0 = centroid + depth * view;
-  double c[2] = {c0.x(), c0.y()};
 
-  ceres::Problem::Options problem_options;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
-  ceres::HuberLoss loss(config.loss_scale_m);
-  for (const auto& q : points) {
-    if (round) {
-      problem.AddResidualBlock(
-          new ceres::AutoDiffCostFunction<CircleResidual, 1 /* residuals */, 2 /* centre */>(
-              new CircleResidual(q.p, leg.Radius())),
-          &loss, c);
-    } else {
-      problem.AddResidualBlock(
-          new ceres::AutoDiffCostFunction<BoxFaceResidual, 2 /* normal, overshoot */, 2>(
-              new BoxFaceResidual(q.p, out.axis_yaw, 0.5 * leg.length_m, 0.5 * leg.width_m)),
-          &loss, c);
+  // Robust loss by iteratively reweighted least squares (Huber weights w = min(1, k / |r|)),
+  // with Ceres' TinySolver (dense LM on 2 parameters) per round: far less overhead than
+  // ceres::Problem for a handful of residuals.
+  thread_local std::vector<double> weights;
+  weights.assign(points.size(), 1.0);
+  LegRayCost cost{&points,
+                  weights.data(),
+                  round,
+                  leg.Radius(),
+                  std::cos(out.axis_yaw),
+                  std::sin(out.axis_yaw),
+                  0.5 * leg.length_m,
+                  0.5 * leg.width_m,
+                  c0,
+                  config.prior_weight};
+  using AutoDiff = ceres::TinySolverAutoDiffFunction<LegRayCost, Eigen::Dynamic, 2>;
+  const AutoDiff function(cost);
+  ceres::TinySolver<AutoDiff> solver;
+  solver.options.max_num_iterations = config.max_iterations;
+  Eigen::Vector2d c = c0;
+  bool ok = true;
+  constexpr int kIrlsRounds = 3;
+  for (int round_i = 0; round_i < kIrlsRounds && ok; ++round_i) {
+    solver.Solve(function, &c);
+    ok = std::isfinite(c.x()) && std::isfinite(c.y());
+    if (round_i + 1 == kIrlsRounds || !ok) break;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      double r[2];
+      const ScanPoint& q = points[i];
+      if (round) {
+        CircleRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, leg.Radius(), r);
+      } else {
+        BoxRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, cost.cos_a,
+                       cost.sin_a, cost.half_x, cost.half_y, r);
+      }
+      const double norm = std::hypot(r[0], r[1]);
+      weights[i] = norm <= config.loss_scale_m ? 1.0 : std::sqrt(config.loss_scale_m / norm);
     }
   }
-  if (config.prior_weight > 0.0) {
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PriorResidual, 2, 2>(
-                                 new PriorResidual(c0, config.prior_weight)),
-                             nullptr, c);
-  }
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = config.max_iterations;
-  options.logging_type = ceres::SILENT;
-  options.num_threads = 1;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
 
-  out.centre = Eigen::Vector2d(c[0], c[1]);
-  out.converged = summary.IsSolutionUsable();
-  const double n = static_cast<double>(points.size());
-  out.rms_m = std::sqrt(2.0 * summary.final_cost / n);
+  out.centre = c;
+  out.converged = ok;
+  double sum_sq = 0.0;
+  for (const auto& q : points) {
+    double r[2];
+    if (round) {
+      CircleRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, leg.Radius(), r);
+    } else {
+      BoxRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, cost.cos_a,
+                     cost.sin_a, cost.half_x, cost.half_y, r);
+    }
+    sum_sq += r[0] * r[0] + r[1] * r[1];
+  }
+  out.rms_m = std::sqrt(sum_sq / static_cast<double>(points.size()));
   return out;
 }
 

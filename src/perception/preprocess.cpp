@@ -37,24 +37,26 @@ std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan) {
   return out;
 }
 
+namespace {
+// The range-adaptive break test between beam neighbours a and b.
+bool SameCluster(const ScanPoint& a, const ScanPoint& b, double alpha,
+                 const PreprocessConfig& config) {
+  // Neighbouring returns on one surface are about r * alpha apart (more at grazing
+  // incidence); dropped beams in between widen the allowed gap proportionally.
+  const int steps = std::max(1, std::abs(b.beam - a.beam));
+  const double r = std::min(a.range, b.range);
+  const double gap =
+      config.cluster_gap_m + config.cluster_gap_beams * r * alpha * static_cast<double>(steps);
+  return (b.p - a.p).squaredNorm() <= gap * gap;
+}
+}  // namespace
+
 std::vector<Cluster> ClusterPoints(const std::vector<ScanPoint>& points, double angle_increment_rad,
                                    const PreprocessConfig& config) {
   std::vector<Cluster> clusters;
   const double alpha = std::abs(angle_increment_rad);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    bool join = false;
-    if (i > 0) {
-      const ScanPoint& a = points[i - 1];
-      const ScanPoint& b = points[i];
-      // Neighbouring returns on one surface are about r * alpha apart (more at grazing
-      // incidence); dropped beams in between widen the allowed gap proportionally.
-      const int steps = std::max(1, std::abs(b.beam - a.beam));
-      const double r = std::min(a.range, b.range);
-      const double gap =
-          config.cluster_gap_m + config.cluster_gap_beams * r * alpha * static_cast<double>(steps);
-      join = (b.p - a.p).norm() <= gap;
-    }
-    if (!join) clusters.emplace_back();
+    if (i == 0 || !SameCluster(points[i - 1], points[i], alpha, config)) clusters.emplace_back();
     clusters.back().points.push_back(points[i]);
   }
   for (auto& c : clusters) UpdateShape(c);
@@ -70,7 +72,8 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad
                          const PreprocessConfig& config) {
   if (pts.size() < 2) return 0;
   const double alpha = std::abs(angle_increment_rad);
-  std::vector<bool> drop(pts.size(), false);
+  thread_local std::vector<char> drop;
+  drop.assign(pts.size(), 0);
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
     if (std::abs(pts[i + 1].beam - pts[i].beam) > 2) continue;  // not neighbours
     const bool first_far = pts[i].range > pts[i + 1].range;
@@ -81,20 +84,16 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad
     if (far.range - near.range < config.trailing_min_jump_m) continue;
     const double steps = std::max(1, std::abs(far.beam - near.beam));
     if (TrailingAngle(far.range, near.range, alpha * steps) < config.trailing_min_angle_rad) {
-      drop[first_far ? i : i + 1] = true;
+      drop[first_far ? i : i + 1] = 1;
     }
   }
-  int removed = 0;
-  std::vector<ScanPoint> kept;
-  kept.reserve(pts.size());
+  // Compact in place (no second buffer).
+  std::size_t write = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    if (drop[i]) {
-      ++removed;
-    } else {
-      kept.push_back(pts[i]);
-    }
+    if (!drop[i]) pts[write++] = pts[i];
   }
-  pts = std::move(kept);
+  const int removed = static_cast<int>(pts.size() - write);
+  pts.resize(write);
   return removed;
 }
 
@@ -136,13 +135,38 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
 
   // Clustering runs on all points and the ROI is applied to whole clusters: cutting points at
   // the ROI circle first would turn the clipped end of a wall into a leg-sized fragment.
-  for (Cluster& c : ClusterPoints(kept, angle_increment_rad, config)) {
-    if (T_lidar_preset && (c.centroid - T_lidar_preset->translation()).norm() > roi_radius) {
+  // Clusters are index spans into `kept`; only candidates are copied out (a scan has a few
+  // hundred clusters, most of them wall pieces: no allocation for those).
+  const double alpha = std::abs(angle_increment_rad);
+  Cluster probe;
+  std::size_t begin = 0;
+  for (std::size_t i = 1; i <= kept.size(); ++i) {
+    if (i < kept.size() && SameCluster(kept[i - 1], kept[i], alpha, config)) continue;
+    const std::size_t end = i;
+    // Shape of [begin, end) without copying: centroid and extent from the first point.
+    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+    double extent2 = 0.0;
+    for (std::size_t k = begin; k < end; ++k) {
+      centroid += kept[k].p;
+      extent2 = std::max(extent2, (kept[k].p - kept[begin].p).squaredNorm());
+    }
+    centroid /= static_cast<double>(end - begin);
+    const std::size_t first = begin;
+    begin = end;
+    if (T_lidar_preset && (centroid - T_lidar_preset->translation()).norm() > roi_radius) {
       continue;
     }
     ++out.clusters;
-    out.roi_points += static_cast<int>(c.points.size());
-    if (FitsLegSize(c, angle_increment_rad, models, config)) {
+    out.roi_points += static_cast<int>(end - first);
+    probe.centroid = centroid;
+    probe.extent_m = std::sqrt(extent2);
+    probe.points.resize(end - first);  // FitsLegSize reads only the count
+    if (FitsLegSize(probe, angle_increment_rad, models, config)) {
+      Cluster c;
+      c.points.assign(kept.begin() + static_cast<std::ptrdiff_t>(first),
+                      kept.begin() + static_cast<std::ptrdiff_t>(end));
+      c.centroid = centroid;
+      c.extent_m = probe.extent_m;
       out.candidates.push_back(std::move(c));
     }
   }

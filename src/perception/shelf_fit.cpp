@@ -3,7 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include <ceres/ceres.h>
+#include <ceres/tiny_solver.h>
+#include <ceres/tiny_solver_autodiff_function.h>
 #include <Eigen/Dense>
 
 #include "geometry/angle.hpp"
@@ -12,45 +13,30 @@
 namespace shelfdock::perception {
 namespace {
 
-template <typename T>
-T WrapAngleT(const T& a) {
-  constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  return a - T(kTwoPi) * ceres::floor((a + T(std::numbers::pi)) / T(kTwoPi));
-}
-
-// Keeps the heading in [-pi, pi) during the solve (as in Ceres' pose_graph_2d example).
-struct AngleManifoldFunctor {
-  template <typename T>
-  bool Plus(const T* x, const T* delta, T* x_plus_delta) const {
-    *x_plus_delta = WrapAngleT(*x + *delta);
-    return true;
-  }
-  template <typename T>
-  bool Minus(const T* y, const T* x, T* y_minus_x) const {
-    *y_minus_x = WrapAngleT(*y - *x);
-    return true;
-  }
-};
-
-// Eq. 8-10 for one leg: u = (c_x, c_y) + R(c_alpha) (s_x L/2, s_y W/2) is the model corner the
-// leg belongs to (Eq. 8-9 is the corner with s = (-1, -1)); residual = leg - u.
+// Eq. 8-10 for all legs: u_i = (c_x, c_y) + R(c_alpha) (s_x L/2, s_y W/2) is the model corner
+// leg i belongs to (Eq. 8-9 is the corner with s = (-1, -1)); residual_i = leg_i - u_i.
 // Eq. 10 sums |dx| + |dy|: that is not rotation invariant, not differentiable at the optimum
 // and not what the "nonlinear least squares" of Eq. 11 solves. We use the squared Euclidean
 // distance (the maximum-likelihood choice for isotropic Gaussian leg errors), made robust to a
-// wrong leg by the loss function.
-struct CornerResidual {
-  CornerResidual(Eigen::Vector2d leg, Eigen::Vector2d corner_shelf)
-      : leg_(std::move(leg)), corner_(std::move(corner_shelf)) {}
+// wrong leg by Cauchy weights applied as iteratively reweighted least squares (the residuals
+// are scaled by sqrt(w_i)). Unused legs (3-leg sets) have zero weight.
+struct CornerCost {
+  std::array<Eigen::Vector2d, 4> legs;
+  std::array<Eigen::Vector2d, 4> corners;  // shelf frame
+  std::array<double, 4> sqrt_w{0.0, 0.0, 0.0, 0.0};
   template <typename T>
-  bool operator()(const T* const centre, const T* const yaw, T* residual) const {
-    const T c = ceres::cos(*yaw);
-    const T s = ceres::sin(*yaw);
-    residual[0] = T(leg_.x()) - (centre[0] + c * T(corner_.x()) - s * T(corner_.y()));
-    residual[1] = T(leg_.y()) - (centre[1] + s * T(corner_.x()) + c * T(corner_.y()));
+  bool operator()(const T* x, T* residual) const {
+    using std::cos;
+    using std::sin;
+    const T c = cos(x[2]);
+    const T s = sin(x[2]);
+    for (int i = 0; i < 4; ++i) {
+      const Eigen::Vector2d& k = corners[i];
+      residual[2 * i] = T(sqrt_w[i]) * (T(legs[i].x()) - (x[0] + c * T(k.x()) - s * T(k.y())));
+      residual[2 * i + 1] = T(sqrt_w[i]) * (T(legs[i].y()) - (x[1] + s * T(k.x()) + c * T(k.y())));
+    }
     return true;
   }
-  Eigen::Vector2d leg_;
-  Eigen::Vector2d corner_;
 };
 
 }  // namespace
@@ -84,39 +70,47 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
     corner_of[i] = best;
   }
 
-  double centre[2] = {T_init.x, T_init.y};
-  double yaw = T_init.yaw;
-  ceres::Problem::Options problem_options;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
-  ceres::CauchyLoss loss(config.loss_scale_m);
-  ceres::AutoDiffManifold<AngleManifoldFunctor, 1, 1> angle_manifold;
+  CornerCost cost;
   for (int i = 0; i < count; ++i) {
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<CornerResidual, 2 /* residuals */,
-                                                             2 /* centre */, 1 /* yaw */>(
-                                 new CornerResidual(legs[i], corners[corner_of[i]])),
-                             &loss, centre, &yaw);
+    cost.legs[i] = legs[i];
+    cost.corners[i] = corners[corner_of[i]];
+    cost.sqrt_w[i] = 1.0;
   }
-  problem.SetManifold(&yaw, &angle_manifold);
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = config.max_iterations;
-  options.logging_type = ceres::SILENT;
-  options.num_threads = 1;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
+  // Ceres' TinySolver: dense LM on 3 parameters and 8 residuals, no heap allocation; the
+  // heading is wrapped to [-pi, pi) after the solve (the cost is 2 pi periodic).
+  using AutoDiff = ceres::TinySolverAutoDiffFunction<CornerCost, 8, 3>;
+  ceres::TinySolver<AutoDiff> solver;
+  solver.options.max_num_iterations = config.max_iterations;
+  Eigen::Vector3d x(T_init.x, T_init.y, T_init.yaw);
+  constexpr int kIrlsRounds = 3;
+  const double s2 = config.loss_scale_m * config.loss_scale_m;
+  double robust_cost = 0.0;
+  for (int round = 0; round < kIrlsRounds; ++round) {
+    const AutoDiff function(cost);
+    solver.Solve(function, &x);
+    // Cauchy: rho(e2) = s^2 log(1 + e2 / s^2), weight rho'(e2) = 1 / (1 + e2 / s^2).
+    const geometry::Pose2 T(x(0), x(1), x(2));
+    robust_cost = 0.0;
+    for (int i = 0; i < count; ++i) {
+      const double e2 = (legs[i] - T * cost.corners[i]).squaredNorm();
+      cost.sqrt_w[i] = std::sqrt(1.0 / (1.0 + e2 / s2));
+      robust_cost += 0.5 * s2 * std::log1p(e2 / s2);
+    }
+  }
+  const bool finite = x.allFinite();
+  const double yaw = geometry::WrapAngle(x(2));
+  const double centre[2] = {x(0), x(1)};
 
   ShelfFitResult out;
   out.T_lidar_shelf = geometry::Pose2(centre[0], centre[1], yaw);
-  out.cost = summary.final_cost;
-  out.converged = summary.IsSolutionUsable();
+  out.cost = robust_cost;
+  out.converged = finite;
   out.legs_used = count;
   out.length_m = edges.long_m;
   out.width_m = edges.short_m;
 
   // Covariance: residual r_i = leg_i - (t + R c_i), so dr/dt = -I and dr/dyaw = -R' c_i.
-  Eigen::MatrixXd J(2 * count, 3);
+  Eigen::Matrix<double, 8, 3> J = Eigen::Matrix<double, 8, 3>::Zero();
   double sum_sq = 0.0;
   const Eigen::Matrix2d R = out.T_lidar_shelf.rotation();
   Eigen::Matrix2d dR;
