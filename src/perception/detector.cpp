@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -55,6 +56,36 @@ int CountInteriorPoints(const std::vector<ScanPoint>& points, const geometry::Po
     if (std::abs(p.x()) < hx && std::abs(p.y()) < hy) ++inside;
   }
   return inside;
+}
+
+// A 3-leg set claims its fourth leg is hidden or missed. Real clutter (furniture, the robot's
+// own frame) forms right triangles of model size; what gives it away is that the beams toward
+// the predicted fourth leg pass through it to something clearly farther, with no dip in range
+// (a leg too thin for a clean return still pulls its mixed points nearer than their
+// neighbours). Beams with no return are no evidence either way (dark legs drop out).
+bool MissingLegContradicted(const std::vector<ScanPoint>& points, const Eigen::Vector2d& leg,
+                            double leg_extent_m, double angle_increment_rad) {
+  constexpr double kMargin_m = 0.15;  // farther than this behind the leg: seen through it
+  constexpr double kDip_m = 0.05;     // nearer than the neighbours by this: something there
+  const double range = leg.norm();
+  if (range < 1e-6) return false;
+  const double bearing = std::atan2(leg.y(), leg.x());
+  const double half = std::atan2(0.5 * leg_extent_m, range) + 0.5 * std::abs(angle_increment_rad);
+  int through = 0;
+  double window_min = std::numeric_limits<double>::infinity();
+  double outside_min = std::numeric_limits<double>::infinity();
+  for (const auto& q : points) {
+    const double d = std::abs(geometry::AngleDiff(q.angle, bearing));
+    if (d <= half) {
+      if (q.range <= range + kMargin_m) return false;  // a return at or before the leg
+      ++through;
+      window_min = std::min(window_min, q.range);
+    } else if (d <= half + 2.0 * std::abs(angle_increment_rad)) {
+      outside_min = std::min(outside_min, q.range);
+    }
+  }
+  if (through < 2) return false;
+  return window_min > outside_min - kDip_m;
 }
 
 int SharedClusters(const Candidate& a, const Candidate& b) {
@@ -135,6 +166,12 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, pair.model);
       if (!PassesThresholds(refined, config_.model_match)) continue;
       if (set.count == 3 && refined.err_sum > config_.model_match.three_leg_err_sum_m) continue;
+      if (set.count == 3 &&
+          MissingLegContradicted(points, legs[0] + legs[2] - legs[1],
+                                 std::hypot(model.leg.length_m, model.leg.width_m),
+                                 angle_increment_rad)) {
+        continue;
+      }
       if (best && refined.err_sum >= best->detection.err_sum) continue;
       if (config_.shelf_fit.max_interior_points >= 0 &&
           CountInteriorPoints(points, fit->T_lidar_shelf, model,

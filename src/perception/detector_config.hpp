@@ -33,7 +33,7 @@ struct ModelMatchConfig {
   double gamma_W_m = 0.05;            ///< [m] err_W threshold (short side)
   double gamma_sum_m = 0.07;          ///< [m] err_sum threshold
   double lambda_m = 0.03;             ///< [m] keep pairs whose err_sum is within this of the best
-  double three_leg_err_sum_m = 0.02;  ///< [m] stricter err_sum (fitted legs) for 3-leg sets:
+  double three_leg_err_sum_m = 0.04;  ///< [m] stricter err_sum (fitted legs) for 3-leg sets:
                                       ///< two edges constrain less than four
 };
 
