@@ -9,56 +9,10 @@
 #include <Eigen/Eigenvalues>
 
 #include "geometry/angle.hpp"
+#include "perception/leg_ray_residual.hpp"
 
 namespace shelfdock::perception {
 namespace {
-
-// Residuals of one beam against a leg section, by ray casting from the sensor (the origin):
-// (measured range - predicted range of the first hit, miss distance). LiDAR noise is along the
-// beam, so the range residual is the maximum-likelihood one; the paper's point-to-surface
-// distances (Eq. 5, Eq. 7) are biased toward the sensor when the noise is comparable to the leg
-// radius (|p - c| is convex in the noise) and pick the wrong face near a corner.
-// A beam that misses the predicted section gets the range residual at its closest approach
-// plus the miss distance, so the residual is continuous across the silhouette.
-
-// Round leg: b = u.c along the beam, e = u x c across it; hit at t = b - sqrt(r^2 - e^2).
-template <typename T>
-void CircleRayResidual(const T* c, double ux, double uy, double range, double radius, T* out) {
-  const T b = T(ux) * c[0] + T(uy) * c[1];
-  const T e = T(ux) * c[1] - T(uy) * c[0];
-  const T e_abs = e < T(0) ? -e : e;
-  if (e_abs < T(radius)) {
-    // The floor keeps the derivative finite at the tangent.
-    const T h2 = T(radius * radius) - e * e;
-    const T h = ceres::sqrt(h2 > T(1e-8) ? h2 : T(1e-8));
-    out[0] = T(range) - (b - h);
-    out[1] = T(0);
-  } else {
-    out[0] = T(range) - b;
-    out[1] = e_abs - T(radius);
-  }
-}
-
-// Rectangular leg: slab test in the leg's axes (x along G_h).
-template <typename T>
-void BoxRayResidual(const T* c, double ux, double uy, double range, double cos_a, double sin_a,
-                    double half_x, double half_y, T* out) {
-  // Ray origin (the sensor) and direction in the leg's axes.
-  const T o[2] = {-(T(cos_a) * c[0] + T(sin_a) * c[1]), -(T(-sin_a) * c[0] + T(cos_a) * c[1])};
-  const double d[2] = {cos_a * ux + sin_a * uy, -sin_a * ux + cos_a * uy};
-  const double h[2] = {half_x, half_y};
-  T t_in(-1e9), t_out(1e9);
-  for (int k = 0; k < 2; ++k) {
-    const double dk = std::abs(d[k]) < 1e-9 ? (d[k] < 0 ? -1e-9 : 1e-9) : d[k];
-    T ta = (T(-h[k]) - o[k]) / T(dk);
-    T tb = (T(h[k]) - o[k]) / T(dk);
-    if (tb < ta) std::swap(ta, tb);
-    if (ta > t_in) t_in = ta;
-    if (tb < t_out) t_out = tb;
-  }
-  out[0] = T(range) - t_in;
-  out[1] = t_in > t_out ? t_in - t_out : T(0);
-}
 
 struct LegRayCost {
   const std::vector<ScanPoint>* points;
@@ -80,7 +34,7 @@ struct LegRayCost {
       if (round) {
         CircleRayResidual(c, ux, uy, q.range, radius, r);
       } else {
-        BoxRayResidual(c, ux, uy, q.range, cos_a, sin_a, half_x, half_y, r);
+        BoxRayResidual(c, ux, uy, q.range, T(cos_a), T(sin_a), half_x, half_y, r);
       }
       r[0] *= T(weights[i]);
       r[1] *= T(weights[i]);
@@ -171,8 +125,8 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
       if (round) {
         CircleRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, leg.Radius(), r);
       } else {
-        BoxRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, cost.cos_a,
-                       cost.sin_a, cost.half_x, cost.half_y, r);
+        BoxRayResidual<double>(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, cost.cos_a,
+                               cost.sin_a, cost.half_x, cost.half_y, r);
       }
       const double norm = std::hypot(r[0], r[1]);
       weights[i] = norm <= config.loss_scale_m ? 1.0 : std::sqrt(config.loss_scale_m / norm);
@@ -187,8 +141,8 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
     if (round) {
       CircleRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, leg.Radius(), r);
     } else {
-      BoxRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, cost.cos_a,
-                     cost.sin_a, cost.half_x, cost.half_y, r);
+      BoxRayResidual<double>(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, cost.cos_a,
+                             cost.sin_a, cost.half_x, cost.half_y, r);
     }
     sum_sq += r[0] * r[0] + r[1] * r[1];
   }

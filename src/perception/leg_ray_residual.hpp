@@ -1,0 +1,59 @@
+#pragma once
+// Ray-cast residuals of one LiDAR beam against a leg section, shared by the leg fit (3.3) and
+// the shelf refinement on points (3.4). Templated for Ceres' automatic differentiation.
+
+#include <cmath>
+#include <utility>
+
+#include <ceres/jet.h>
+
+namespace shelfdock::perception {
+
+// Residuals of one beam against a leg section, by ray casting from the sensor (the origin):
+// (measured range - predicted range of the first hit, miss distance). LiDAR noise is along the
+// beam, so the range residual is the maximum-likelihood one; the paper's point-to-surface
+// distances (Eq. 5, Eq. 7) are biased toward the sensor when the noise is comparable to the leg
+// radius (|p - c| is convex in the noise) and pick the wrong face near a corner.
+// A beam that misses the predicted section gets the range residual at its closest approach
+// plus the miss distance, so the residual is continuous across the silhouette.
+
+// Round leg: b = u.c along the beam, e = u x c across it; hit at t = b - sqrt(r^2 - e^2).
+template <typename T>
+void CircleRayResidual(const T* c, double ux, double uy, double range, double radius, T* out) {
+  const T b = T(ux) * c[0] + T(uy) * c[1];
+  const T e = T(ux) * c[1] - T(uy) * c[0];
+  const T e_abs = e < T(0) ? -e : e;
+  if (e_abs < T(radius)) {
+    // The floor keeps the derivative finite at the tangent.
+    const T h2 = T(radius * radius) - e * e;
+    const T h = ceres::sqrt(h2 > T(1e-8) ? h2 : T(1e-8));
+    out[0] = T(range) - (b - h);
+    out[1] = T(0);
+  } else {
+    out[0] = T(range) - b;
+    out[1] = e_abs - T(radius);
+  }
+}
+
+// Rectangular leg: slab test in the leg's axes (x along G_h).
+template <typename T>
+void BoxRayResidual(const T* c, double ux, double uy, double range, const T& cos_a, const T& sin_a,
+                    double half_x, double half_y, T* out) {
+  // Ray origin (the sensor) and direction in the leg's axes.
+  const T o[2] = {-(cos_a * c[0] + sin_a * c[1]), -(-sin_a * c[0] + cos_a * c[1])};
+  const T d[2] = {cos_a * T(ux) + sin_a * T(uy), -sin_a * T(ux) + cos_a * T(uy)};
+  const double h[2] = {half_x, half_y};
+  T t_in(-1e9), t_out(1e9);
+  for (int k = 0; k < 2; ++k) {
+    const T dk = (d[k] < T(0) ? -d[k] : d[k]) < T(1e-9) ? T(d[k] < T(0) ? -1e-9 : 1e-9) : d[k];
+    T ta = (T(-h[k]) - o[k]) / dk;
+    T tb = (T(h[k]) - o[k]) / dk;
+    if (tb < ta) std::swap(ta, tb);
+    if (ta > t_in) t_in = ta;
+    if (tb < t_out) t_out = tb;
+  }
+  out[0] = T(range) - t_in;
+  out[1] = t_in > t_out ? t_in - t_out : T(0);
+}
+
+}  // namespace shelfdock::perception
