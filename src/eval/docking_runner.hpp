@@ -97,8 +97,10 @@ DockingRun RunDocking(const sim::Scenario& scenario,
                       const std::vector<geometry::ShelfModel>& models, docking::Method method,
                       std::uint64_t seed, const RunConfig& config);
 
-/// Docking time of a robot that knows the true shelf pose: one plan from the true start to the
-/// true goal, tracked with the same limits, plus the lift; no detection, no code check.
+/// Docking time of a robot that knows the true shelf pose, on DockingRun::time_s's definition:
+/// from crossing the docking area's entry (reached at the docking speed after the same approach)
+/// to the end of the lift; one plan to the true goal with the same limits, no detection, no code
+/// check.
 double PerfectKnowledgeTime(const sim::Scenario& scenario, const RunConfig& config);
 
 /// Distance between the robot's footprint at T_world_base and a leg (negative: overlap).
