@@ -3,15 +3,10 @@
 # -DSHELFDOCK, -DSOURCE_DIR, -DWORK_DIR.
 set(CAMERA ${SOURCE_DIR}/config/camera.yaml)
 
+include(${CMAKE_CURRENT_LIST_DIR}/../cli_expect.cmake)
+# expect_run(<exit code> <regex> <marker arguments...>)
 function(expect_run expected_code must_match)
-  execute_process(COMMAND ${SHELFDOCK} marker ${ARGN}
-                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "marker ${ARGN}: exit ${code}, expected ${expected_code}\n${out}\n${err}")
-  endif()
-  if(NOT "${out}${err}" MATCHES "${must_match}")
-    message(FATAL_ERROR "marker ${ARGN}: output does not match '${must_match}'\n${out}\n${err}")
-  endif()
+  expect_shelfdock(${expected_code} "${must_match}" marker ${ARGN})
 endfunction()
 
 # Code 12 at x = 0.02 m, y = -0.015 m, yaw = 0.1 rad: read back within 1 mm / 5 mrad.
