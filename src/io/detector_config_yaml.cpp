@@ -9,6 +9,7 @@ void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
   f.Read("roi_gamma", c.roi_gamma);
   f.Read("cluster_gap_m", c.cluster_gap_m);
   f.Read("cluster_gap_beams", c.cluster_gap_beams);
+  f.Read("cluster_max_missing_beams", c.cluster_max_missing_beams);
   f.Read("trailing_min_angle_rad", c.trailing_min_angle_rad);
   f.Read("trailing_min_jump_m", c.trailing_min_jump_m);
   f.Read("leg_extent_margin_m", c.leg_extent_margin_m);

@@ -25,6 +25,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(p.roi_gamma > 0.5, "preprocess.roi_gamma", "> 0.5 (the ROI must reach the legs)");
   k.Check(p.cluster_gap_m > 0.0, "preprocess.cluster_gap_m", "> 0");
   k.Check(p.cluster_gap_beams >= 0.0, "preprocess.cluster_gap_beams", ">= 0");
+  k.Check(p.cluster_max_missing_beams >= 0, "preprocess.cluster_max_missing_beams", ">= 0");
   k.Check(p.trailing_min_angle_rad >= 0.0 && p.trailing_min_angle_rad < std::numbers::pi / 2,
           "preprocess.trailing_min_angle_rad", "in [0, pi/2)");
   k.Check(p.trailing_min_jump_m >= 0.0, "preprocess.trailing_min_jump_m", ">= 0");

@@ -9,8 +9,10 @@ namespace shelfdock::perception {
 struct PreprocessConfig {
   double roi_gamma = 0.75;  ///< [-] ROI radius around the preset = roi_gamma * R (R: longest
                             ///< model diagonal); the paper's gamma. Must exceed 0.5 to hold legs.
-  double cluster_gap_m = 0.05;     ///< [m] break distance between consecutive points at range 0
-  double cluster_gap_beams = 2.0;  ///< [-] plus this many beam spacings at the point's range
+  double cluster_gap_m = 0.05;        ///< [m] break distance between consecutive points at range 0
+  double cluster_gap_beams = 2.0;     ///< [-] plus this many beam spacings at the point's range
+  int cluster_max_missing_beams = 3;  ///< [-] beams without return tolerated inside a cluster
+                                      ///< (dark legs drop some); a longer hole splits it
   double trailing_min_angle_rad = 0.17;  ///< [rad] Eq. 1: beta below this marks a trailing point
   double trailing_min_jump_m = 0.04;     ///< [m] depth jumps below this are noise, not trailing
   double leg_extent_margin_m = 0.04;     ///< [m] a leg cluster may exceed the leg diagonal by this

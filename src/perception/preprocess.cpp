@@ -44,6 +44,10 @@ bool SameCluster(const ScanPoint& a, const ScanPoint& b, double alpha,
   // Neighbouring returns on one surface are about r * alpha apart (more at grazing
   // incidence); dropped beams in between widen the allowed gap proportionally.
   const int steps = std::max(1, std::abs(b.beam - a.beam));
+  // A long hole is no surface: without a background (open space behind a shelf), the two back
+  // legs are consecutive valid points 60 beams apart, and a gap widened by 60 beam spacings
+  // would join them into one cluster.
+  if (steps - 1 > config.cluster_max_missing_beams) return false;
   const double r = std::min(a.range, b.range);
   const double gap =
       config.cluster_gap_m + config.cluster_gap_beams * r * alpha * static_cast<double>(steps);

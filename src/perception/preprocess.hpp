@@ -38,7 +38,8 @@ struct PreprocessOutput {
 std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan);
 
 /// Splits points (beam order) where the gap exceeds the range-adaptive break distance
-/// cluster_gap_m + cluster_gap_beams * r * |angle_increment| per beam step.
+/// cluster_gap_m + cluster_gap_beams * r * |angle_increment| per beam step, or where more than
+/// cluster_max_missing_beams beams in between returned nothing.
 std::vector<Cluster> ClusterPoints(const std::vector<ScanPoint>& points, double angle_increment_rad,
                                    const PreprocessConfig& config);
 
