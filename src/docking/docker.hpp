@@ -82,6 +82,12 @@ class Docker {
   const ShelfTracker& shelf_tracker() const { return tracker_; }
   /// The robot's offset from the goal measured by the last code check (goal frame).
   const std::optional<geometry::Pose2>& last_code_offset() const { return code_offset_; }
+  /// The LiDAR-guided goal (odom frame) as it was when the camera first corrected it while
+  /// driving in; empty when the camera never corrected the goal.
+  const std::optional<geometry::Pose2>& lidar_goal_before_camera() const {
+    return lidar_goal_before_camera_;
+  }
+  int camera_corrections() const { return camera_corrections_; }
 
  private:
   void StartDocking(const Observations& obs, Command* cmd);
@@ -89,8 +95,12 @@ class Docker {
   void StepStand(const Observations& obs, Command* cmd);
   void StepVerify(const Observations& obs, Command* cmd);
   void ProcessScan(const Observations& obs, bool recognise, Command* cmd);
+  void GuideByCode(const Observations& obs, Command* cmd);
+  bool StartAdjustFromGuide(const Observations& obs, Command* cmd);
+  geometry::Pose2 TagGoal(const geometry::Pose2& T_tag_base) const;
   enum class PlanStatus { kOk, kInfeasible, kCollides };
-  PlanStatus Replan(const geometry::Pose2& T_odom_base, const geometry::Pose2& goal, Command* cmd);
+  PlanStatus Replan(const geometry::Pose2& T_odom_base, const geometry::Pose2& goal, Command* cmd,
+                    const PlannerConfig* planner = nullptr);
   bool LidarStillUseful(const geometry::Pose2& T_odom_base) const;
   geometry::Pose2 GoalFromShelf(const geometry::Pose2& T_odom_shelf) const;
   void Fail(OutcomeCode code, std::string reason, Command* cmd);
@@ -115,6 +125,9 @@ class Docker {
   std::optional<geometry::Pose2> last_detection_;
   std::optional<geometry::Pose2> code_offset_;
   std::vector<geometry::Pose2> code_readings_;
+  std::vector<geometry::Pose2> guide_tags_;  ///< T_odom_tag from the camera while driving in
+  std::optional<geometry::Pose2> lidar_goal_before_camera_;
+  int camera_corrections_ = 0;
   int path_version_ = 0;
   int replans_ = 0;
   int adjust_tries_ = 0;

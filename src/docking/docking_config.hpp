@@ -72,6 +72,22 @@ struct VerifyConfig {
   double max_correction_m = 0.05;        ///< [m] larger offsets are not corrected blind
 };
 
+/// The upward camera used in advance (paper 3.5: "When approaching the recognizing position, we
+/// turn on the overhead camera ... in advance, scan, and search for the QR code"). On the final
+/// straight the code enters the camera's view about 0.1 m before the goal (0.30 m above a
+/// 480 px / 500 px focal image: +-0.14 m along the robot's x, less the code's half size); from
+/// the code's measured pose the goal is corrected while creeping in, so the robot usually stops
+/// inside the check tolerance. Used by both methods.
+struct CameraGuideConfig {
+  bool enabled = true;
+  double camera_on_m = 0.3;        ///< [m] remaining path below which the camera looks
+  int frames = 1;                  ///< code readings averaged before the first correction
+  double min_remaining_m = 0.012;  ///< [m] no new correction closer to the goal than this
+  double replan_xy_m = 0.0005;     ///< [m] goal change (code vs current goal) to correct
+  double replan_yaw_rad = 0.001;   ///< [rad]
+  double max_curvature_1pm = 8.0;  ///< [1/m] curvature bound of the short correcting path
+};
+
 /// The stop-and-recognise baseline.
 struct BaselineConfig {
   double parking_distance_m = 1.6;  ///< [m] parking spot this far before the preset goal
@@ -85,6 +101,7 @@ struct DockingConfig {
   ShelfTrackerConfig tracker;
   SafetyConfig safety;
   VerifyConfig verify;
+  CameraGuideConfig camera_guide;
   BaselineConfig baseline;
 
   geometry::Pose2 T_base_lidar{0.30, 0.0, 0.0};  ///< LiDAR mounting (nominal)

@@ -57,6 +57,8 @@ TrackingStatus PathTracker::Update(const geometry::Pose2& T_frame_base, double d
   const double k_ahead = MaxCurvatureAhead(proj.s, look);
   if (k_ahead > 1e-6) {
     v_target = std::min(v_target, std::sqrt(config_.max_lateral_accel_mps2 / k_ahead));
+    // A sharp short path (a camera correction close in) must also fit the yaw-rate limit.
+    v_target = std::min(v_target, 0.8 * config_.max_yaw_rate_radps / k_ahead);
   }
   if (stopping) v_target = std::max(v_target, std::min(config_.creep_speed_mps, cruise_mps_));
   // Rate limits; braking may use a little more than the profile's deceleration.

@@ -151,6 +151,8 @@ DockingRun RunDocking(const sim::Scenario& scenario,
   int camera_frames = 0;
   int last_path_version = 0;
   bool verify_seen = false;
+  bool before_check_set = false;
+  bool camera_on = false;  // as the Docker commanded in the last step
   const std::vector<sim::LegFootprint> legs = scenario.world.LegFootprints();
   geometry::LaserScan scan;
 
@@ -181,7 +183,7 @@ DockingRun RunDocking(const sim::Scenario& scenario,
       }
     }
     // The camera, when on, at its frame rate.
-    if (docker.phase() == docking::Phase::kVerify && t + 1e-9 >= next_camera_t) {
+    if ((camera_on || docker.phase() == docking::Phase::kVerify) && t + 1e-9 >= next_camera_t) {
       next_camera_t = t + 1.0 / config.camera_rate_hz;
       obs.camera_frame = true;
       const auto above =
@@ -198,10 +200,25 @@ DockingRun RunDocking(const sim::Scenario& scenario,
     const docking::Command cmd = docker.Step(obs);
     AddPhaseTime(docker.done() ? phase_before : docker.phase(), cmd, dt, &run.phases);
 
+    camera_on = cmd.camera_on;
+    // error_before_check is the LiDAR-guided final error (the "before the code check").
+    // When the camera corrected the goal on the way in, that is where the LiDAR-guided goal lay
+    // in truth at the takeover (the true T_world_odom of that instant maps it); otherwise the
+    // robot's pose when it stopped for the check.
+    if (!before_check_set && docker.lidar_goal_before_camera() && true_shelf) {
+      before_check_set = true;
+      const Pose2 T_world_odom = robot.T_world_base() * obs.T_odom_base.inverse();
+      run.error_before_check =
+          ErrorInShelfFrame(T_world_odom * *docker.lidar_goal_before_camera(),
+                            true_shelf->T_world_shelf, dcfg.dock_yaw_offset_rad);
+    }
     if (!verify_seen && docker.phase() == docking::Phase::kVerify && true_shelf) {
       verify_seen = true;
-      run.error_before_check = ErrorInShelfFrame(robot.T_world_base(), true_shelf->T_world_shelf,
-                                                 dcfg.dock_yaw_offset_rad);
+      if (!before_check_set) {
+        before_check_set = true;
+        run.error_before_check = ErrorInShelfFrame(robot.T_world_base(), true_shelf->T_world_shelf,
+                                                   dcfg.dock_yaw_offset_rad);
+      }
     }
     if (cmd.start_lift) {
       robot.StartLift();

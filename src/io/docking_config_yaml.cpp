@@ -77,6 +77,18 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.RejectUnknown();
   }
   {
+    YamlFields f(top.Child("camera_guide"), path, "camera_guide");
+    auto& k = c.camera_guide;
+    f.Read("enabled", k.enabled);
+    f.Read("camera_on_m", k.camera_on_m);
+    f.Read("frames", k.frames);
+    f.Read("min_remaining_m", k.min_remaining_m);
+    f.Read("replan_xy_m", k.replan_xy_m);
+    f.Read("replan_yaw_rad", k.replan_yaw_rad);
+    f.Read("max_curvature_1pm", k.max_curvature_1pm);
+    f.RejectUnknown();
+  }
+  {
     YamlFields f(top.Child("baseline"), path, "baseline");
     f.Read("parking_distance_m", c.baseline.parking_distance_m);
     f.Read("settle_s", c.baseline.settle_s);
