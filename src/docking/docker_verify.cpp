@@ -1,0 +1,133 @@
+// Verification (paper 3.5): the upward camera in advance on the final straight, the code check
+// at the goal, and the start of the fine adjustment.
+#include "docking/docker.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "geometry/angle.hpp"
+
+#include "docking/docker_detail.hpp"
+
+namespace shelfdock::docking {
+
+using detail::Fmt;
+using detail::MeanPose;
+using geometry::Pose2;
+
+Pose2 Docker::TagGoal(const Pose2& T_tag_base) const {
+  // The code is at the shelf centre along its long side; the goal is T_shelf_goal_ up to the
+  // code's own pi (which end the robot came from).
+  Pose2 T_tag_goal = T_shelf_goal_;
+  if (std::abs(geometry::AngleDiff(T_tag_base.yaw, T_tag_goal.yaw)) > 0.5 * std::numbers::pi) {
+    T_tag_goal = T_tag_goal * Pose2(0.0, 0.0, std::numbers::pi);
+  }
+  return T_tag_goal;
+}
+
+void Docker::GuideByCode(const Observations& obs, Command* cmd) {
+  const CameraGuideConfig& g = config_.camera_guide;
+  if (!obs.marker || obs.marker->id != task_.shelf_id) return;  // the check at the goal reports
+  // The camera sits at the base origin: the code's pose in odom from this frame's odometry.
+  // Averaging over frames taken along the last decimetres (odometry drift there is sub-mm).
+  guide_tags_.push_back(obs.T_odom_base * obs.marker->T_camera_tag);
+  if (static_cast<int>(guide_tags_.size()) < g.frames) return;
+  const Pose2 T_odom_tag = MeanPose(guide_tags_);
+  const Pose2 goal = T_odom_tag * TagGoal(T_odom_tag.inverse() * obs.T_odom_base);
+  const double remaining_m = -(T_odom_goal_.inverse() * obs.T_odom_base).x;
+  if (remaining_m < g.min_remaining_m) return;
+  const Pose2 diff = T_odom_goal_.inverse() * goal;
+  if (std::hypot(diff.x, diff.y) <= g.replan_xy_m && std::abs(diff.yaw) <= g.replan_yaw_rad) return;
+  // A short Bezier straight onto the corrected goal: no final straight is left at this point,
+  // and the curvature bound is the tracker's (slow speed), not the approach's.
+  PlannerConfig planner = config_.planner;
+  planner.min_final_straight_m = 0.0;
+  planner.final_straight_m = std::min(planner.final_straight_m, 0.5 * remaining_m);
+  planner.max_curvature_1pm = g.max_curvature_1pm;
+  const Pose2 lidar_goal = T_odom_goal_;
+  if (Replan(obs.T_odom_base, goal, cmd, &planner) != PlanStatus::kOk) return;
+  if (!lidar_goal_before_camera_) lidar_goal_before_camera_ = lidar_goal;
+  ++camera_corrections_;
+  cmd->events.push_back("camera_guide: goal moved " + Fmt(diff.x, 4) + "," + Fmt(diff.y, 4) + "," +
+                        Fmt(diff.yaw, 4) + " from " + std::to_string(guide_tags_.size()) +
+                        " code readings, " + Fmt(remaining_m, 3) + " m to go");
+}
+
+bool Docker::StartAdjustFromGuide(const Observations& obs, Command* cmd) {
+  if (guide_tags_.empty() || adjust_tries_ >= config_.verify.max_adjust_tries) return false;
+  // The code seen on the way in (paper 3.5: the camera "in advance") already tells where the goal
+  // is; odometry over the last centimetres carries it to the stop. Beyond the tolerance, adjust
+  // at once instead of first standing for a check; the check after the adjustment verifies.
+  const Pose2 T_odom_tag = MeanPose(guide_tags_);
+  const Pose2 T_odom_goal = T_odom_tag * TagGoal(T_odom_tag.inverse() * obs.T_odom_base);
+  const Pose2 offset = T_odom_goal.inverse() * obs.T_odom_base;
+  const VerifyConfig& v = config_.verify;
+  const bool xy_ok =
+      std::abs(offset.x) <= v.tolerance_xy_m && std::abs(offset.y) <= v.tolerance_xy_m;
+  if (xy_ok && std::abs(offset.yaw) <= v.tolerance_yaw_rad) return false;
+  if (std::hypot(offset.x, offset.y) > v.max_correction_m) return false;  // the check decides
+  ++adjust_tries_;
+  // Within the position tolerance only the heading is corrected (a turn in place).
+  adjust_.Start(obs.T_odom_base,
+                xy_ok ? obs.T_odom_base * Pose2(0.0, 0.0, -offset.yaw) : T_odom_goal);
+  phase_ = Phase::kAdjust;
+  cmd->events.push_back("adjust: try " + std::to_string(adjust_tries_) +
+                        " from the code seen on the way in, offset " + Fmt(offset.x, 4) + "," +
+                        Fmt(offset.y, 4) + "," + Fmt(offset.yaw, 4));
+  return true;
+}
+
+void Docker::StepVerify(const Observations& obs, Command* cmd) {
+  cmd->velocity = {};
+  cmd->camera_on = true;
+  if (!obs.camera_frame) return;
+  if (!obs.marker) {
+    if (++missing_frames_ > config_.verify.max_missing_frames) {
+      Fail(OutcomeCode::kCodeNotFound,
+           "no code seen under the shelf in " + std::to_string(missing_frames_) + " frames", cmd);
+    }
+    return;
+  }
+  if (obs.marker->id != task_.shelf_id) {
+    Fail(OutcomeCode::kWrongShelf,
+         "the code under the shelf reads " + std::to_string(obs.marker->id) + ", expected " +
+             std::to_string(task_.shelf_id),
+         cmd);
+    return;
+  }
+  code_readings_.push_back(obs.marker->T_camera_tag);  // camera at the base origin
+  if (static_cast<int>(code_readings_.size()) < config_.verify.frames) return;
+
+  const Pose2 T_tag_base = MeanPose(code_readings_).inverse();
+  code_readings_.clear();
+  const Pose2 T_tag_goal = TagGoal(T_tag_base);
+  const Pose2 offset = T_tag_goal.inverse() * T_tag_base;
+  code_offset_ = offset;
+  cmd->events.push_back("code_check: offset " + Fmt(offset.x, 4) + "," + Fmt(offset.y, 4) + "," +
+                        Fmt(offset.yaw, 4));
+  const double xy = std::hypot(offset.x, offset.y);
+  const bool within = std::abs(offset.x) <= config_.verify.tolerance_xy_m &&
+                      std::abs(offset.y) <= config_.verify.tolerance_xy_m &&
+                      std::abs(offset.yaw) <= config_.verify.tolerance_yaw_rad;
+  if (within || adjust_tries_ >= config_.verify.max_adjust_tries) {
+    if (!within) cmd->events.push_back("adjust_exhausted: lifting with the offset above");
+    phase_ = Phase::kLift;
+    phase_start_t_ = obs.t_s;
+    cmd->start_lift = true;
+    cmd->events.push_back("lift_started");
+    return;
+  }
+  if (xy > config_.verify.max_correction_m) {
+    Fail(OutcomeCode::kWouldCollide,
+         "the code shows the robot " + Fmt(xy) + " m off the centre: too far to correct blind",
+         cmd);
+    return;
+  }
+  ++adjust_tries_;
+  adjust_.Start(obs.T_odom_base, obs.T_odom_base * offset.inverse());
+  phase_ = Phase::kAdjust;
+  cmd->camera_on = false;
+  cmd->events.push_back("adjust: try " + std::to_string(adjust_tries_));
+}
+
+}  // namespace shelfdock::docking
