@@ -67,12 +67,19 @@ TEST(DetectorStatsTest, RightShelfAndAccuracyWithin3p5m) {
       "%.1f mrad p95 %.1f mrad\n",
       100.0 * rate, 1e3 * Percentile(centre_err, 0.5), 1e3 * c95, 1e3 * Percentile(yaw_err, 0.5),
       1e3 * y95);
-  // Issue targets: rate >= 98 %, p95 <= 10 mm and <= 10 mrad. Measured (seed 42): 74.5 %
-  // (round model 34 %, rectangular 84-94 %), 9.3 mm, 10.3 mrad. Rate and heading targets are
-  // NOT MET; the bars below hold the measured figures so that regressions fail.
-  EXPECT_GE(rate, 0.70);
+  // Issue targets: rate >= 98 %, p95 <= 10 mm and <= 10 mrad. The centre target is asserted.
+  // Measured (seed 42): 78.8 % found (round 37 %, 1075x883 89 %, 1250x1250 99 %, 1080x856
+  // 90 %), 8.5 mm, 10.2 mrad. Rate and heading: NOT MET. The simulator's legs (reflectivity
+  // 0.15, its default) are darker than the 0.6 wall behind them, and its mixed-pixel model
+  // returns the energy-weighted mean range of the footprint's sub-rays; a 26 mm leg beyond ~2 m
+  // is narrower than a footprint, so none of its returns lies near it (measured: a leg at
+  // 3.17 m in front of a wall at 7.17 m reads 4.52 m and 3.39 m). 60 of the 63 round-leg
+  // misses have fewer than three legs with any return within 45 mm of the leg; the rectangular
+  // misses are mostly 1075x883 / 1080x856 confusions (27 mm apart in width) from legs seen by
+  // one beam each at 3-4.8 m. The bars hold the measured figures so that regressions fail.
+  EXPECT_GE(rate, 0.77);
   EXPECT_LE(c95, 0.010);
-  EXPECT_LE(y95, 0.012);
+  EXPECT_LE(y95, 0.0105);
 }
 
 // Paper Table 1 setting: the LiDAR faces the shelf with its front legs about 0.5 m away
