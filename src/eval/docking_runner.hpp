@@ -81,8 +81,10 @@ struct DockingRun {
   docking::Method method = docking::Method::kContinuous;
   std::uint64_t seed = 0;
   double time_s = 0.0;  ///< [s] docking area entry to end of lift (or to the stop on failure)
+  /// LiDAR-guided final error (the "before the code check"): where the LiDAR-guided
+  /// goal truly lay when the camera first corrected it on the way in, else the pose at the stop.
   PoseError error_before_check;
-  PoseError error_after_check;
+  PoseError error_after_check;  ///< the pose when the lift starts
   int replans = 0;
   int detections = 0;
   double min_leg_clearance_m = 1e9;  ///< [m] true footprint to true legs over the whole run

@@ -13,10 +13,15 @@
 //   {"type": "summary", ...the `shelfdock dock` result object...}: "result" ("success" or the
 //    failure's snake_case name), "reason", "time_s" (docking area entry to end of lift),
 //    "error_before_check" / "error_after_check" ({"x","y","yaw"} against the true shelf centre
-//    in the shelf frame, null when not reached), "replans", "detections", "min_leg_clearance_m",
+//    in the shelf frame, null when not reached; before = the LiDAR-guided final error: the
+//    LiDAR-guided goal where it truly lay when the upward camera first corrected it on the way
+//    in, else the pose at the stop for the check; after = the pose at the lift),
+//    "replans", "detections", "min_leg_clearance_m",
 //    "method", "seed", "phases": {"approach_s" (before the entry, not in time_s), "dock_s",
 //    "final_slow_s" (part of dock_s below 0.1 m/s), "stand_s" (baseline parking), "verify_s",
-//    "adjust_s", "lift_s", "abort_s", "code_checks", "adjustments"}
+//    "adjust_s", "lift_s", "abort_s", "code_checks", "adjustments" (including those started
+//    from the code seen on the way in, without a standing check first)}. Step events include
+//    "camera_guide: ..." when the code seen while driving in moved the goal.
 //
 // Frames: everything is in the world (= map) frame. What the robot keeps in its odometry frame
 // (detection, fused shelf, path) is drawn where the robot believes it is relative to itself,

@@ -119,18 +119,32 @@ TEST(DockingSim, MonteCarloMeetsThePapersAccuracyAndBeatsTheBaseline) {
     EXPECT_LE(m->after_yaw.max, bands.after_yaw_rad);
     EXPECT_GT(m->min_leg_clearance_m, 0.05);
   }
-  // Time on the same seeds. The issue asks for 25% (the paper: 25.9%, with 11.21 s ~ 4.5 m at
-  // 0.4 m/s, i.e. without lift or code check). Here both times include the 2 s lift and the
-  // shared code check, and the baseline's only extra cost is the stop (about 0.9 s of braking
-  // and re-accelerating) plus standing to recognise (settle_s + standing_scans): measured ~13%.
-  // Asserted: at least 10% faster on average, and on no seed more than 0.5 s slower (one
-  // method may need a fine adjustment where the other does not).
-  EXPECT_LE(c.mean_time_s, 0.90 * b.mean_time_s) << c.mean_time_s << " vs " << b.mean_time_s;
+  // Time on the same seeds, from crossing the docking area's entry (entered at ~0.4 m/s after
+  // the approach) to the end of the lift. The issue asks for 25% (the paper: 25.9%, 11.21 s vs
+  // 15.14 s); that is NOT met here: both methods use the camera in advance and share the 2 s
+  // lift, ~11.9 s of driving and ~0.35 s of code check, so the baseline's only extra cost is the
+  // stop at the parking spot (~0.9 s of braking and re-accelerating), standing to recognise
+  // (settle_s 1 s + 5 scans = 1.31 s) and its larger blind-docking error (longer adjustments).
+  // Measured 16.9% on seeds 1000-1099 (14.71 s vs 17.70 s) and 16.5% on these 20 seeds.
+  // Asserted with a margin of ~4 points: at least 12% faster on average, and on no seed more
+  // than 0.5 s slower (one method may need a fine adjustment where the other does not).
+  EXPECT_LE(c.mean_time_s, 0.88 * b.mean_time_s) << c.mean_time_s << " vs " << b.mean_time_s;
   for (int i = 0; i < kSeeds; ++i) {
     EXPECT_LT(cont[i].time_s, base[i].time_s + 0.5) << "seed " << cont[i].seed;
   }
-  // No run can beat a robot that knows the true shelf pose and never stops to look.
+  // No run can beat a robot that knows the true shelf pose and never stops to look (timed on the
+  // same definition: from the entry crossing at the docking speed; 13.7 s here).
   const double perfect = PerfectKnowledgeTime(s, RunConfig{});
+  // Entering at cruise speed v, it drives d = entry_distance_m at v and brakes at a_dec at the
+  // end (costing v / 2 a_dec over cruising), then lifts: a count from the start of the approach
+  // would exceed the upper bound by seconds.
+  const RunConfig defaults;
+  const double d = defaults.docking.entry_distance_m;
+  const double v = defaults.docking.controller.max_speed_mps;
+  const double a = defaults.docking.controller.max_decel_mps2;
+  const double lift = defaults.robot.lift_duration_s;
+  EXPECT_GT(perfect, d / v + lift);
+  EXPECT_LT(perfect, d / v + v / (2.0 * a) + lift + 0.1);
   for (const DockingRun& r : cont) EXPECT_GT(r.time_s, perfect - 1e-9) << "seed " << r.seed;
 }
 
