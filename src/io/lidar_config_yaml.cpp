@@ -25,6 +25,7 @@ sim::LidarConfig ReadLidarConfig(const std::string& path) {
   f.Read("beam_aperture_m", c.beam_aperture_m);
   f.Read("footprint_rays", c.footprint_rays);
   f.Read("min_echo_fraction", c.min_echo_fraction);
+  f.Read("echo_separation_m", c.echo_separation_m);
   f.Read("enable_dropouts", c.enable_dropouts);
   f.Read("dropout_probability", c.dropout_probability);
   f.Read("dark_dropout_gain", c.dark_dropout_gain);

@@ -1,6 +1,7 @@
 #include "sim/lidar.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 
@@ -117,31 +118,51 @@ Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_l
   if (std::isfinite(hi) && hi - lo < kDepthEdge_m) return echo;
   if (!std::isfinite(lo)) return echo;  // nothing anywhere in the cone
 
-  // A depth edge: the echo is the energy-weighted mean of the sub-rays that return, with a
-  // Gaussian beam profile (sigma a quarter of the footprint). This mixed range is what puts
-  // trailing points between a leg and the wall behind it.
+  // A depth edge. The sub-rays' returns form pulses: returns closer in range than
+  // echo_separation_m overlap in time and blend into one echo at their energy-weighted mean range
+  // (the mixed "trailing" points of paper 3.1); returns farther apart are separate pulses, and a
+  // pulsed time-of-flight receiver reports the first one that covers at least min_echo_fraction
+  // of the beam profile (Gaussian, sigma a quarter of the footprint). A weak first pulse is lost
+  // behind the background's.
   const int n = c.footprint_rays;
-  double w_total = 0.0, w_hit = 0.0, e_sum = 0.0, er_sum = 0.0;
+  struct Return {
+    double range_m, weight, energy;
+  };
+  std::array<Return, 31> returns{};  // footprint_rays <= 31 (validated)
+  int n_returns = 0;
+  double w_total = 0.0;
   for (int k = 0; k < n; ++k) {
     const double u = -0.5 + static_cast<double>(k) / (n - 1);
     const SubHit s =
         k == 0 ? left : (k == n - 1 ? right : (2 * k == n - 1 ? echo.centre : cast(u)));
     const double w = std::exp(-0.5 * (u / 0.25) * (u / 0.25));
     w_total += w;
-    if (!std::isfinite(s.range_m)) continue;
-    w_hit += w;
-    const double e = w * strength(s);
-    e_sum += e;
-    er_sum += e * s.range_m;
+    if (std::isfinite(s.range_m)) returns[n_returns++] = {s.range_m, w, w * strength(s)};
   }
-  if (w_hit < c.min_echo_fraction * w_total || e_sum <= 0.0) {
-    echo.range_m = kNaN;
-    echo.intensity = 0.0;
-    return echo;
+  std::sort(returns.begin(), returns.begin() + n_returns,
+            [](const Return& a, const Return& b) { return a.range_m < b.range_m; });
+  for (int begin = 0; begin < n_returns;) {
+    int end = begin + 1;
+    while (end < n_returns &&
+           returns[end].range_m - returns[end - 1].range_m < c.echo_separation_m) {
+      ++end;
+    }
+    double w = 0.0, e = 0.0, er = 0.0;
+    for (int k = begin; k < end; ++k) {
+      w += returns[k].weight;
+      e += returns[k].energy;
+      er += returns[k].energy * returns[k].range_m;
+    }
+    if (w >= c.min_echo_fraction * w_total && e > 0.0) {
+      echo.range_m = er / e;
+      echo.intensity = e / w_total;
+      echo.mixed = returns[end - 1].range_m - returns[begin].range_m >= kDepthEdge_m;
+      return echo;
+    }
+    begin = end;
   }
-  echo.range_m = er_sum / e_sum;
-  echo.intensity = e_sum / w_total;
-  echo.mixed = true;
+  echo.range_m = kNaN;
+  echo.intensity = 0.0;
   return echo;
 }
 

@@ -33,6 +33,7 @@ std::optional<ConfigError> Validate(const LidarConfig& c) {
   if (!(c.min_echo_fraction > 0.0 && c.min_echo_fraction <= 1.0)) {
     return fail("min_echo_fraction", "in (0, 1]");
   }
+  if (!(c.echo_separation_m > 0.0)) return fail("echo_separation_m", "> 0");
   if (!(c.dropout_probability >= 0.0 && c.dropout_probability <= 1.0)) {
     return fail("dropout_probability", "in [0, 1]");
   }

@@ -28,13 +28,16 @@ struct LidarConfig {
   bool enable_quantisation = true;
   double quantisation_m = 0.001;  ///< [m] range resolution
 
-  // Beam footprint: a beam is a cone, not a line. Where it straddles a depth edge the echo
-  // mixes foreground and background into a "trailing" point between them (paper 3.1, Eq. 1).
+  // Beam footprint: a beam is a cone, not a line. Where it straddles a depth edge closer than a
+  // pulse length, the echo mixes foreground and background into a "trailing" point between them
+  // (paper 3.1, Eq. 1); farther apart, the receiver sees two pulses and reports the first.
   bool enable_footprint = true;
   double beam_divergence_rad = 0.006;  ///< [rad] full cone angle
   double beam_aperture_m = 0.004;      ///< [m] beam width at the window
   int footprint_rays = 5;              ///< sub-rays across the footprint at a depth edge (odd)
   double min_echo_fraction = 0.3;      ///< share of the footprint that must return an echo
+  double echo_separation_m = 0.5;  ///< [m] returns farther apart are separate pulses (pulsed ToF:
+                                   ///< about c * pulse width / 2); closer ones blend into one
 
   // Dropouts: p = dropout_probability + dark_dropout_gain * (1 - reflectivity)
   //                + (shiny ? shiny_dropout_gain * sin^2(incidence) : 0).

@@ -26,32 +26,54 @@ int CountTrailing(const geometry::LaserScan& scan, double near_m, double far_m) 
 }
 
 TEST(LidarEffectsTest, FootprintMakesTrailingPointsAtDepthEdgesOnly) {
-  // A 4 cm post 2 m ahead of a wall at 6 m: the post's two silhouette edges are depth edges.
+  // A 4 cm post 0.3 m ahead of a wall at 2.3 m: the post's two silhouette edges are depth edges
+  // closer than a pulse length, so straddling beams blend both surfaces into trailing points.
+  constexpr double kPost_m = 2.0, kWall_m = 2.3;
   World world;
-  world.AddRoundPost(Eigen::Vector2d(2.0, 0.0), 0.02);
-  world.AddWall({{6.0, -20.0}, {6.0, 20.0}});
+  world.AddRoundPost(Eigen::Vector2d(kPost_m, 0.0), 0.02);
+  world.AddWall({{kWall_m, -20.0}, {kWall_m, 20.0}});
   LidarConfig config = IdealLidarConfig();
   config.enable_footprint = true;
   config.beam_divergence_rad = 0.012;  // wide enough that both edges straddle a beam
+  ASSERT_GT(config.echo_separation_m, kWall_m - kPost_m);
   Lidar with(config, 1);
   Lidar without(IdealLidarConfig(), 1);
   const auto labelled = with.ScanLabelled(
       world, [](double) { return Pose2(); }, 0.0);
-  const int trailing = CountTrailing(labelled.scan, 2.0 - 0.02, 6.0);
-  EXPECT_GE(trailing, 1);
-  EXPECT_EQ(CountTrailing(without.Scan(world, Pose2()), 2.0 - 0.02, 6.0), 0);
+  const double near_m = kPost_m - 0.02;
+  EXPECT_GE(CountTrailing(labelled.scan, near_m, kWall_m), 1);
+  EXPECT_EQ(CountTrailing(without.Scan(world, Pose2()), near_m, kWall_m), 0);
   // Every trailing point sits next to the post: within a few beams of its bearing.
   const std::size_t centre = BeamAt(labelled.scan, 0.0);
   for (std::size_t i = 0; i < labelled.scan.ranges.size(); ++i) {
     const double r = labelled.scan.ranges[i];
-    if (std::isfinite(r) && r > 2.05 && r < 5.95) {
+    if (std::isfinite(r) && r > near_m + 0.05 && r < kWall_m - 0.05) {
       EXPECT_LE(std::abs(static_cast<long>(i) - static_cast<long>(centre)), 4) << "beam " << i;
       EXPECT_TRUE(labelled.truth[i].mixed);
     }
   }
   // Away from edges the footprint does not bias ranges: a flat wall reads its true distance.
   const std::size_t far = BeamAt(labelled.scan, 0.5);
-  EXPECT_NEAR(labelled.scan.ranges[far], 6.0 / std::cos(labelled.scan.BeamAngle(far)), 1e-3);
+  EXPECT_NEAR(labelled.scan.ranges[far], kWall_m / std::cos(labelled.scan.BeamAngle(far)), 1e-3);
+}
+
+TEST(LidarEffectsTest, DistantBackgroundIsASeparatePulseNotATrailingPoint) {
+  // The same post 4 m ahead of the wall: foreground and background pulses are resolved, so a
+  // straddling beam reads the post (the first pulse, when it covers enough of the beam) or the
+  // wall, never a range in between.
+  constexpr double kPost_m = 2.0, kWall_m = 6.0;
+  World world;
+  world.AddRoundPost(Eigen::Vector2d(kPost_m, 0.0), 0.02);
+  world.AddWall({{kWall_m, -20.0}, {kWall_m, 20.0}});
+  LidarConfig config = IdealLidarConfig();
+  config.enable_footprint = true;
+  config.beam_divergence_rad = 0.012;
+  ASSERT_LT(config.echo_separation_m, kWall_m - kPost_m);
+  Lidar lidar(config, 1);
+  const auto scan = lidar.Scan(world, Pose2());
+  EXPECT_EQ(CountTrailing(scan, kPost_m - 0.02, kWall_m), 0);
+  // The post is still seen: its centre beam reads its front face.
+  EXPECT_NEAR(scan.ranges[BeamAt(scan, 0.0)], kPost_m - 0.02, 2e-3);
 }
 
 TEST(LidarEffectsTest, MotionSkewMatchesSpeedTimesSweepTime) {
