@@ -166,10 +166,9 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, pair.model);
       if (!PassesThresholds(refined, config_.model_match)) continue;
       if (set.count == 3 && refined.err_sum > config_.model_match.three_leg_err_sum_m) continue;
-      if (set.count == 3 &&
-          MissingLegContradicted(points, legs[0] + legs[2] - legs[1],
-                                 std::hypot(model.leg.length_m, model.leg.width_m),
-                                 angle_increment_rad)) {
+      if (set.count == 3 && MissingLegContradicted(points, legs[0] + legs[2] - legs[1],
+                                                   std::min(model.leg.length_m, model.leg.width_m),
+                                                   angle_increment_rad)) {
         continue;
       }
       if (best && refined.err_sum >= best->detection.err_sum) continue;

@@ -94,11 +94,10 @@ TEST(DetectorTest, FindsEveryModelAtAllDistancesAndHeadings) {
   }
   std::printf("[ e2e grid ] %d/%d found; worst centre %.4f m, worst heading %.4f rad\n", found,
               cases, worst_centre, worst_yaw);
-  // Issue target (every case found) NOT MET: round 26 mm legs beyond ~2 m return only mixed
-  // points in the simulator (see detector_stats_test.cpp), the 4 m row loses legs at 4-5 m, and
-  // a few 1075x883 / 1080x856 cases are confused. The bar is the measured 126/160 minus a
-  // margin; every detection made must be accurate.
-  EXPECT_GE(found, 120);
+  // Without a preset, out to 4 m (beyond the 3.5 m of the accuracy figures). Measured: 156/160;
+  // the misses are three 1075x883 / 1080x856 confusions at 3-4 m and one round-leg shelf at 4 m.
+  // Every detection made must be accurate (asserted above); at least 95 % must be made.
+  EXPECT_GE(found, cases * 95 / 100);
 }
 
 TEST(DetectorTest, OneLegHiddenGivesAThreeLegDetection) {
@@ -163,12 +162,9 @@ TEST(DetectorTest, FrontAndBackLegInLineStillDetected) {
     }
   }
   std::printf("[ in line ] %d/%d found\n", found, cases);
-  // The occlusion itself is handled (3-leg sets); the misses that remain (measured 6/52 at
-  // 1.5-3 m) come from the other legs: a dark 40 mm leg beyond ~2.5 m gets one clean beam, which
-  // may drop out, and mixed points 0.1-0.2 m behind it. They are isolated: no two neighbouring
-  // offsets (1 cm apart, i.e. consecutive scans when creeping sideways) both miss, so a tracker
-  // bridges them. Issue intent (every scan) NOT MET.
-  EXPECT_GE(found, cases * 88 / 100);
+  // The occlusion is handled by 3-leg sets: every offset is found (measured 52/52).
+  EXPECT_EQ(found, cases);
+  EXPECT_EQ(neighbouring_misses, 0);
   EXPECT_EQ(neighbouring_misses, 0);
 }
 
