@@ -165,7 +165,6 @@ TEST(DetectorTest, FrontAndBackLegInLineStillDetected) {
   // The occlusion is handled by 3-leg sets: every offset is found (measured 52/52).
   EXPECT_EQ(found, cases);
   EXPECT_EQ(neighbouring_misses, 0);
-  EXPECT_EQ(neighbouring_misses, 0);
 }
 
 TEST(DetectorTest, PresetPicksTheMiddleOfThreeShelvesSideBySide) {
