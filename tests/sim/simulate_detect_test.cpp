@@ -66,10 +66,15 @@ TEST(SimulateDetectTest, PaperScenarioShelfFoundWithinDetectorFigures) {
     }
   }
   ASSERT_FALSE(centre_err.empty());
-  EXPECT_GE(found, 0.9 * scans);
-  // Typical accuracy within 3.5 m: the paper's docking figures (1 cm, 0.014 rad) with margin.
-  EXPECT_LT(Median(centre_err), 0.010);
-  EXPECT_LT(Median(yaw_err), 0.010);
+  // The detector's figures (issue 2): the right shelf in >= 98 % of scans, centre error p95
+  // <= 10 mm and heading error p95 <= 10 mrad within 3.5 m. Measured: 72/72, max 8.8 mm, 7.6 mrad.
+  EXPECT_GE(found, 0.98 * scans);
+  auto p95 = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[static_cast<std::size_t>(0.95 * static_cast<double>(v.size() - 1) + 0.5)];
+  };
+  EXPECT_LE(p95(centre_err), 0.010);
+  EXPECT_LE(p95(yaw_err), 0.010);
   std::printf(
       "[ sim->detect ] %d/%d found; centre error median %.4f max %.4f m; yaw error "
       "median %.4f max %.4f rad\n",
