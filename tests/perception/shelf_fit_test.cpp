@@ -23,7 +23,7 @@ TEST(ShelfFitTest, FourAndThreeLegsAllRoundIncludingNearPi) {
   const auto model = testing::PaperModels()[1];
   const ShelfFitConfig config;
   for (const double yaw : {0.0, 1.0, 3.1400, -3.1400, M_PI - 1e-6, -M_PI}) {
-    for (const Eigen::Vector2d centre : {Eigen::Vector2d(2.0, 0.5), Eigen::Vector2d(-2.5, -0.4)}) {
+    for (const Eigen::Vector2d& centre : {Eigen::Vector2d(2.0, 0.5), Eigen::Vector2d(-2.5, -0.4)}) {
       // The second centre lies behind the sensor.
       const geometry::Pose2 truth(centre.x(), centre.y(), yaw);
       auto legs = Legs(model, truth);
