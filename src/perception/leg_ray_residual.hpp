@@ -1,6 +1,6 @@
 #pragma once
-// Ray-cast residuals of one LiDAR beam against a leg section, shared by the leg fit (3.3) and
-// the shelf refinement on points (3.4). Templated for Ceres' automatic differentiation.
+// Ray-cast residuals of one LiDAR beam against a leg section, for the leg fit (3.3). Templated
+// for automatic differentiation (ceres::TinySolverAutoDiffFunction).
 
 #include <cmath>
 #include <utility>
