@@ -4,21 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/paper_models.hpp"
 #include "docking/path_planner.hpp"
 
 namespace shelfdock::docking {
 namespace {
 
 using geometry::Pose2;
-
-geometry::ShelfModel Shelf2() {
-  geometry::ShelfModel m;
-  m.name = "t1-rect-1075x883";
-  m.length_m = 1.075;
-  m.width_m = 0.883;
-  m.leg = {geometry::LegShape::kRectangle, 0.04, 0.04};
-  return m;
-}
 
 TEST(CollisionCheck, FootprintDistanceIsTheBoxSignedDistance) {
   SafetyConfig s;
@@ -32,7 +24,7 @@ TEST(CollisionCheck, FootprintDistanceIsTheBoxSignedDistance) {
 
 TEST(CollisionCheck, CentredDockClearsLegsByTheGeometricGap) {
   const SafetyConfig s;
-  const geometry::ShelfModel shelf = Shelf2();
+  const geometry::ShelfModel shelf = shelfdock::testing::PaperShelf2();
   const Pose2 T_map_shelf(2.0, 1.0, 0.4);
   const PlanResult plan =
       PlanDockingPath(T_map_shelf * Pose2(-4.0, 0.0, 0.0), T_map_shelf, PlannerConfig{});
@@ -47,7 +39,7 @@ TEST(CollisionCheck, CentredDockClearsLegsByTheGeometricGap) {
 
 TEST(CollisionCheck, OffsetGoalIsRefused) {
   const SafetyConfig s;
-  const geometry::ShelfModel shelf = Shelf2();
+  const geometry::ShelfModel shelf = shelfdock::testing::PaperShelf2();
   const Pose2 T_map_shelf;
   const Pose2 goal(0.0, 0.15, 0.0);  // 15 cm to the side of the centre
   const PlanResult plan = PlanDockingPath(Pose2(-4.0, 0.15, 0.0), goal, PlannerConfig{});

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "../common/paper_models.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/laser_scan.hpp"
 #include "geometry/pose2.hpp"
@@ -18,26 +19,8 @@
 
 namespace shelfdock::perception::testing {
 
-inline geometry::ShelfModel MakeModel(const char* name, double length, double width,
-                                      geometry::LegShape shape, double leg) {
-  geometry::ShelfModel m;
-  m.name = name;
-  m.length_m = length;
-  m.width_m = width;
-  m.leg.shape = shape;
-  m.leg.length_m = leg;
-  m.leg.width_m = leg;
-  return m;
-}
-
-/// The paper's Table 1 (same values as config/models.yaml).
-inline std::vector<geometry::ShelfModel> PaperModels() {
-  using geometry::LegShape;
-  return {MakeModel("t1-round-900x810", 0.90, 0.81, LegShape::kCircle, 0.026),
-          MakeModel("t1-rect-1075x883", 1.075, 0.883, LegShape::kRectangle, 0.04),
-          MakeModel("t1-rect-1250x1250", 1.25, 1.25, LegShape::kRectangle, 0.04),
-          MakeModel("t1-rect-1080x856", 1.08, 0.856, LegShape::kRectangle, 0.04)};
-}
+using shelfdock::testing::MakeModel;
+using shelfdock::testing::PaperModels;
 
 /// A 12 m x 10 m room around the origin (walls far behind every test shelf).
 inline void AddRoom(sim::World& world) {

@@ -5,25 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/paper_models.hpp"
+
 namespace shelfdock::sim {
 namespace {
-
-geometry::ShelfModel RectShelf() {
-  geometry::ShelfModel m;
-  m.name = "t1-rect-1075x883";
-  m.length_m = 1.075;
-  m.width_m = 0.883;
-  m.leg = {geometry::LegShape::kRectangle, 0.04, 0.04};
-  return m;
-}
 
 TEST(WorldTest, LegFootprintsAreTheModelsLegCentresInTheWorld) {
   World world;
   const geometry::Pose2 T_world_shelf(2.0, -1.0, 0.3);
-  world.AddShelf(7, RectShelf(), T_world_shelf);
+  world.AddShelf(7, shelfdock::testing::PaperShelf2(), T_world_shelf);
   const auto legs = world.LegFootprints(7);
   ASSERT_EQ(legs.size(), 4u);
-  const auto centres = RectShelf().LegCentres();
+  const auto centres = shelfdock::testing::PaperShelf2().LegCentres();
   for (std::size_t i = 0; i < 4; ++i) {
     const Eigen::Vector2d expected = T_world_shelf * centres[i];
     EXPECT_NEAR((legs[i].T_world_leg.translation() - expected).norm(), 0.0, 1e-12);
@@ -40,7 +33,7 @@ TEST(WorldTest, LegFootprintsAreTheModelsLegCentresInTheWorld) {
 
 TEST(WorldTest, MovingAndRemovingShelves) {
   World world;
-  world.AddShelf(1, RectShelf(), geometry::Pose2());
+  world.AddShelf(1, shelfdock::testing::PaperShelf2(), geometry::Pose2());
   ASSERT_TRUE(world.SetShelfPose(1, geometry::Pose2(5.0, 0.0, 0.0)));
   EXPECT_NEAR(world.Shelf(1)->T_world_shelf.x, 5.0, 1e-12);
   EXPECT_FALSE(world.SetShelfPose(2, geometry::Pose2()));
