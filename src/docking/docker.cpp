@@ -2,12 +2,14 @@
 // stages (docker_dock.cpp, docker_baseline.cpp, docker_verify.cpp).
 #include "docking/docker.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
 #include "docking/collision_check.hpp"
 #include "docking/path_planner.hpp"
+#include "geometry/angle.hpp"
 
 #include "docking/docker_detail.hpp"
 
@@ -111,16 +113,13 @@ Command Docker::Step(const Observations& obs) {
       StartDocking(obs, &cmd);
     } else {
       const Pose2 T_map_entry = T_map_goal * Pose2(-config_.entry_distance_m, 0.0, 0.0);
-      const PlanResult plan =
-          PlanDockingPath(obs.T_map_base_estimate, T_map_entry, config_.planner);
-      if (!plan.ok) {
-        Fail(OutcomeCode::kWouldCollide, "no approach path to the docking area: " + plan.reason,
-             &cmd);
-      } else {
-        follower_.SetPath(plan.path, config_.controller.approach_speed_mps,
-                          config_.controller.max_speed_mps, 0.0);
-        ++path_version_;
+      if (PlanApproach(obs.T_map_base_estimate, T_map_entry)) {
         cmd.events.push_back("approach: planned to the docking area's entry");
+      } else {
+        // A differential drive can always face its target first; the smooth curve from there
+        // bends less.
+        turn_toward_entry_ = T_map_entry;
+        cmd.events.push_back("approach: no smooth path from here; turning toward the entry");
       }
     }
   }
@@ -132,18 +131,9 @@ Command Docker::Step(const Observations& obs) {
   }
 
   switch (phase_) {
-    case Phase::kApproach: {
-      const TrackingStatus s = follower_.Update(obs.T_map_base_estimate, dt);
-      if (s.reached) {
-        StartDocking(obs, &cmd);
-        if (phase_ == Phase::kDock) StepDock(obs, &cmd);
-      } else if (s.lost) {
-        Fail(OutcomeCode::kWouldCollide, "the robot left the approach path", &cmd);
-      } else {
-        cmd.velocity = s.command;
-      }
+    case Phase::kApproach:
+      StepApproach(obs, dt, &cmd);
       break;
-    }
     case Phase::kDock:
       StepDock(obs, &cmd);
       break;
@@ -190,6 +180,47 @@ Command Docker::Step(const Observations& obs) {
   last_t_ = obs.t_s;
   last_T_odom_base_ = obs.T_odom_base;
   return cmd;
+}
+
+bool Docker::PlanApproach(const Pose2& T_map_base, const Pose2& T_map_entry) {
+  const PlanResult plan = PlanDockingPath(T_map_base, T_map_entry, config_.planner);
+  if (!plan.ok) return false;
+  follower_.SetPath(plan.path, config_.controller.approach_speed_mps,
+                    config_.controller.max_speed_mps, 0.0);
+  ++path_version_;
+  return true;
+}
+
+void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
+  if (turn_toward_entry_) {
+    constexpr double kAligned_rad = 0.02;
+    constexpr double kTurnGain_1ps = 2.0;
+    const Eigen::Vector2d to_entry =
+        turn_toward_entry_->translation() - obs.T_map_base_estimate.translation();
+    const double error =
+        geometry::AngleDiff(std::atan2(to_entry.y(), to_entry.x()), obs.T_map_base_estimate.yaw);
+    if (std::abs(error) > kAligned_rad) {
+      const double w_max = config_.controller.max_yaw_rate_radps;
+      cmd->velocity = {0.0, std::clamp(kTurnGain_1ps * error, -w_max, w_max)};
+      return;
+    }
+    const Pose2 T_map_entry = *turn_toward_entry_;
+    turn_toward_entry_.reset();
+    if (!PlanApproach(obs.T_map_base_estimate, T_map_entry)) {
+      Fail(OutcomeCode::kWouldCollide, "no approach path to the docking area's entry", cmd);
+      return;
+    }
+    cmd->events.push_back("approach: planned to the docking area's entry after turning");
+  }
+  const TrackingStatus s = follower_.Update(obs.T_map_base_estimate, dt);
+  if (s.reached) {
+    StartDocking(obs, cmd);
+    if (phase_ == Phase::kDock) StepDock(obs, cmd);
+  } else if (s.lost) {
+    Fail(OutcomeCode::kWouldCollide, "the robot left the approach path", cmd);
+  } else {
+    cmd->velocity = s.command;
+  }
 }
 
 }  // namespace shelfdock::docking

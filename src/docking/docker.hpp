@@ -104,6 +104,8 @@ class Docker {
   bool LidarStillUseful(const geometry::Pose2& T_odom_base) const;
   geometry::Pose2 GoalFromShelf(const geometry::Pose2& T_odom_shelf) const;
   void Fail(OutcomeCode code, std::string reason, Command* cmd);
+  bool PlanApproach(const geometry::Pose2& T_map_base, const geometry::Pose2& T_map_entry);
+  void StepApproach(const Observations& obs, double dt, Command* cmd);
 
   DockingConfig config_;
   DockingTask task_;
@@ -120,6 +122,9 @@ class Docker {
   geometry::Pose2 T_shelf_goal_;  ///< robot pose under the shelf (which end it entered from)
   geometry::Pose2 T_odom_goal_;   ///< the current path's end
   bool goal_is_parking_ = false;
+  /// The approach's smooth curve was infeasible from where the robot stood: turn on the spot
+  /// toward the entry first, then plan again.
+  std::optional<geometry::Pose2> turn_toward_entry_;
   bool lidar_in_use_ = true;
   bool started_ = false;
   std::optional<geometry::Pose2> last_detection_;

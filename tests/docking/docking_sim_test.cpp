@@ -46,6 +46,29 @@ TEST(DockingSim, BothMethodsDockUnderAShelf29cmAnd10DegOffItsPreset) {
   }
 }
 
+TEST(DockingSim, TurnsTowardAnEntryNoSmoothCurveReaches) {
+  // Seed 1029 of the drift scenario puts the preset (and with it the docking area's entry) so far
+  // to the side of the start that no curve within the curvature bound reaches it: the robot turns
+  // on the spot first, then approaches and docks.
+  const Fixture f;
+  const sim::Scenario s = f.Load("config/scenarios/paper_docking_drift.yaml");
+  RunConfig config;
+  config.record = true;
+  const DockingRun run = RunDocking(s, f.models, Method::kContinuous, 1029, config);
+  ASSERT_TRUE(run.outcome.ok()) << run.outcome.reason;
+  bool turned = false;
+  for (const RecordFrame& frame : run.record) {
+    for (const std::string& e : frame.events)
+      turned |= e.find("turning toward") != std::string::npos;
+  }
+  EXPECT_TRUE(turned);
+  ASSERT_TRUE(run.error_after_check.valid);
+  EXPECT_LT(std::abs(run.error_after_check.x), 0.003);
+  EXPECT_LT(std::abs(run.error_after_check.y), 0.003);
+  EXPECT_LT(std::abs(run.error_after_check.yaw), 0.005);
+  EXPECT_GT(run.min_leg_clearance_m, 0.05);
+}
+
 TEST(DockingSim, EachFailureIsReportedWithItsReason) {
   const Fixture f;
   struct Case {
