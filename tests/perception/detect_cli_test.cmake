@@ -3,15 +3,10 @@
 set(MODELS ${SOURCE_DIR}/config/models.yaml)
 set(DATA ${SOURCE_DIR}/tests/data)
 
+include(${CMAKE_CURRENT_LIST_DIR}/../cli_expect.cmake)
+# expect_run(<exit code> <regex> <detect arguments...>)
 function(expect_run expected_code must_match)
-  execute_process(COMMAND ${SHELFDOCK} detect ${ARGN}
-                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "detect ${ARGN}: exit ${code}, expected ${expected_code}\n${out}\n${err}")
-  endif()
-  if(NOT "${out}${err}" MATCHES "${must_match}")
-    message(FATAL_ERROR "detect ${ARGN}: output does not match '${must_match}'\n${out}\n${err}")
-  endif()
+  expect_shelfdock(${expected_code} "${must_match}" detect ${ARGN})
 endfunction()
 
 # The example scan holds one t1-rect-1075x883 at (2.0, 0.2, 0.1); with frames given.
