@@ -88,6 +88,15 @@ bool MissingLegContradicted(const std::vector<ScanPoint>& points, const Eigen::V
   return window_min > outside_min - kDip_m;
 }
 
+// A 3-leg set around the sensor: the LiDAR would be under the shelf. Unless the preset says the
+// robot is under it, one hidden leg there is likelier furniture (seen on the real bags) than a
+// shelf, and docking stops using the LiDAR before it gets under the shelf anyway.
+bool SensorInsideFootprint(const geometry::Pose2& T_lidar_shelf,
+                           const geometry::ShelfModel& model) {
+  const Eigen::Vector2d p = T_lidar_shelf.inverse() * Eigen::Vector2d::Zero();
+  return std::abs(p.x()) < 0.5 * model.length_m && std::abs(p.y()) < 0.5 * model.width_m;
+}
+
 int SharedClusters(const Candidate& a, const Candidate& b) {
   int shared = 0;
   for (int i : a.clusters) {
@@ -166,6 +175,10 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, pair.model);
       if (!PassesThresholds(refined, config_.model_match)) continue;
       if (set.count == 3 && refined.err_sum > config_.model_match.three_leg_err_sum_m) continue;
+      if (set.count == 3 && SensorInsideFootprint(fit->T_lidar_shelf, model) &&
+          !(T_lidar_preset && SensorInsideFootprint(*T_lidar_preset, model))) {
+        continue;
+      }
       if (set.count == 3 && MissingLegContradicted(points, legs[0] + legs[2] - legs[1],
                                                    std::min(model.leg.length_m, model.leg.width_m),
                                                    angle_increment_rad)) {
