@@ -29,6 +29,22 @@ void AddPhases(const PhaseTimes& t, PhaseTimes* sum) {
   sum->abort_s += t.abort_s;
 }
 
+/// The errors of one kind (before or after the code check) over the runs that reached it.
+struct ErrorSamples {
+  std::vector<double> x, y, yaw;
+  int within = 0;  ///< runs inside the band on all three axes
+
+  void Add(const PoseError& e, double band_xy_m, double band_yaw_rad) {
+    if (!e.valid) return;
+    x.push_back(e.x);
+    y.push_back(e.y);
+    yaw.push_back(e.yaw);
+    within +=
+        std::abs(e.x) <= band_xy_m && std::abs(e.y) <= band_xy_m && std::abs(e.yaw) <= band_yaw_rad;
+  }
+  double WithinShare() const { return x.empty() ? 0.0 : static_cast<double>(within) / x.size(); }
+};
+
 }  // namespace
 
 double Quantile(std::vector<double> values, double q) {
@@ -43,9 +59,8 @@ double Quantile(std::vector<double> values, double q) {
 MethodSummary Summarise(const std::vector<DockingRun>& runs, const AccuracyBands& bands) {
   MethodSummary s;
   s.runs = static_cast<int>(runs.size());
-  std::vector<double> bx, by, byaw, ax, ay, ayaw;
+  ErrorSamples before, after;
   double time_sum = 0.0;
-  int in_before = 0, in_after = 0;
   for (const DockingRun& r : runs) {
     s.min_leg_clearance_m = std::min(s.min_leg_clearance_m, r.min_leg_clearance_m);
     if (r.outcome.ok()) {
@@ -55,22 +70,8 @@ MethodSummary Summarise(const std::vector<DockingRun>& runs, const AccuracyBands
       s.mean_code_checks += r.phases.code_checks;
       s.mean_adjustments += r.phases.adjustments;
     }
-    if (r.error_before_check.valid) {
-      const PoseError& e = r.error_before_check;
-      bx.push_back(e.x);
-      by.push_back(e.y);
-      byaw.push_back(e.yaw);
-      in_before += std::abs(e.x) <= bands.before_xy_m && std::abs(e.y) <= bands.before_xy_m &&
-                   std::abs(e.yaw) <= bands.before_yaw_rad;
-    }
-    if (r.error_after_check.valid) {
-      const PoseError& e = r.error_after_check;
-      ax.push_back(e.x);
-      ay.push_back(e.y);
-      ayaw.push_back(e.yaw);
-      in_after += std::abs(e.x) <= bands.after_xy_m && std::abs(e.y) <= bands.after_xy_m &&
-                  std::abs(e.yaw) <= bands.after_yaw_rad;
-    }
+    before.Add(r.error_before_check, bands.before_xy_m, bands.before_yaw_rad);
+    after.Add(r.error_after_check, bands.after_xy_m, bands.after_yaw_rad);
   }
   s.mean_time_s = s.successes > 0 ? time_sum / s.successes : 0.0;
   if (s.successes > 0) {
@@ -83,14 +84,14 @@ MethodSummary Summarise(const std::vector<DockingRun>& runs, const AccuracyBands
     s.mean_code_checks /= n;
     s.mean_adjustments /= n;
   }
-  s.before_x = Stats(bx);
-  s.before_y = Stats(by);
-  s.before_yaw = Stats(byaw);
-  s.after_x = Stats(ax);
-  s.after_y = Stats(ay);
-  s.after_yaw = Stats(ayaw);
-  s.within_before = bx.empty() ? 0.0 : static_cast<double>(in_before) / bx.size();
-  s.within_after = ax.empty() ? 0.0 : static_cast<double>(in_after) / ax.size();
+  s.before_x = Stats(before.x);
+  s.before_y = Stats(before.y);
+  s.before_yaw = Stats(before.yaw);
+  s.after_x = Stats(after.x);
+  s.after_y = Stats(after.y);
+  s.after_yaw = Stats(after.yaw);
+  s.within_before = before.WithinShare();
+  s.within_after = after.WithinShare();
   return s;
 }
 
