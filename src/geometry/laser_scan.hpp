@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,11 @@ struct LaserScan {
 
   double BeamAngle(std::size_t i) const {
     return angle_min + static_cast<double>(i) * angle_increment;
+  }
+  /// The beam nearest to `angle_rad` (inverse of BeamAngle); the caller keeps the angle within
+  /// [angle_min, angle_max].
+  std::size_t NearestBeam(double angle_rad) const {
+    return static_cast<std::size_t>(std::lround((angle_rad - angle_min) / angle_increment));
   }
 };
 

@@ -13,11 +13,6 @@ namespace {
 
 using geometry::Pose2;
 
-std::size_t BeamAt(const geometry::LaserScan& scan, double bearing_rad) {
-  return static_cast<std::size_t>(
-      std::lround((bearing_rad - scan.angle_min) / scan.angle_increment));
-}
-
 /// Counts beams whose range lies strictly between foreground and background, away from both.
 int CountTrailing(const geometry::LaserScan& scan, double near_m, double far_m) {
   int n = 0;
@@ -44,7 +39,7 @@ TEST(LidarEffectsTest, FootprintMakesTrailingPointsAtDepthEdgesOnly) {
   EXPECT_GE(CountTrailing(labelled.scan, near_m, kWall_m), 1);
   EXPECT_EQ(CountTrailing(without.Scan(world, Pose2()), near_m, kWall_m), 0);
   // Every trailing point sits next to the post: within a few beams of its bearing.
-  const std::size_t centre = BeamAt(labelled.scan, 0.0);
+  const std::size_t centre = labelled.scan.NearestBeam(0.0);
   for (std::size_t i = 0; i < labelled.scan.ranges.size(); ++i) {
     const double r = labelled.scan.ranges[i];
     if (std::isfinite(r) && r > near_m + 0.05 && r < kWall_m - 0.05) {
@@ -53,7 +48,7 @@ TEST(LidarEffectsTest, FootprintMakesTrailingPointsAtDepthEdgesOnly) {
     }
   }
   // Away from edges the footprint does not bias ranges: a flat wall reads its true distance.
-  const std::size_t far = BeamAt(labelled.scan, 0.5);
+  const std::size_t far = labelled.scan.NearestBeam(0.5);
   EXPECT_NEAR(labelled.scan.ranges[far], kWall_m / std::cos(labelled.scan.BeamAngle(far)), 1e-3);
 }
 
@@ -73,7 +68,7 @@ TEST(LidarEffectsTest, DistantBackgroundIsASeparatePulseNotATrailingPoint) {
   const auto scan = lidar.Scan(world, Pose2());
   EXPECT_EQ(CountTrailing(scan, kPost_m - 0.02, kWall_m), 0);
   // The post is still seen: its centre beam reads its front face.
-  EXPECT_NEAR(scan.ranges[BeamAt(scan, 0.0)], kPost_m - 0.02, 2e-3);
+  EXPECT_NEAR(scan.ranges[scan.NearestBeam(0.0)], kPost_m - 0.02, 2e-3);
 }
 
 TEST(LidarEffectsTest, MotionSkewMatchesSpeedTimesSweepTime) {
@@ -111,14 +106,14 @@ TEST(LidarEffectsTest, TiltedScanPlaneHitsTheFloorAtHeightOverTanTilt) {
   const auto scan = lidar.Scan(world, Pose2());
   // Straight ahead the beam sinks by the full tilt: floor at h / tan(tilt) horizontally,
   // h / sin(tilt) along the beam (11.46 m for 0.2 m and 1 deg).
-  EXPECT_NEAR(scan.ranges[BeamAt(scan, 0.0)], 0.2 / std::sin(config.tilt_pitch_rad), 1e-6);
+  EXPECT_NEAR(scan.ranges[scan.NearestBeam(0.0)], 0.2 / std::sin(config.tilt_pitch_rad), 1e-6);
   // At 60 deg the depression is asin(sin(tilt) cos 60): the floor is twice as far.
-  const std::size_t i60 = BeamAt(scan, std::numbers::pi / 3);
+  const std::size_t i60 = scan.NearestBeam(std::numbers::pi / 3);
   const double depression =
       std::asin(std::sin(config.tilt_pitch_rad) * std::cos(scan.BeamAngle(i60)));
   EXPECT_NEAR(scan.ranges[i60], 0.2 / std::sin(depression), 1e-6);
   // Sideways the beam stays level and backwards it climbs: no floor there.
-  EXPECT_TRUE(std::isnan(scan.ranges[BeamAt(scan, std::numbers::pi / 2)]));
+  EXPECT_TRUE(std::isnan(scan.ranges[scan.NearestBeam(std::numbers::pi / 2)]));
   EXPECT_TRUE(std::isnan(scan.ranges.front()));
 }
 
@@ -138,8 +133,8 @@ TEST(LidarEffectsTest, TiltCutsObjectsAtAnotherHeight) {
   Lidar a(level, 1), b(tilted, 1);
   const auto sa = a.Scan(world, Pose2());
   const auto sb = b.Scan(world, Pose2());
-  EXPECT_TRUE(std::isnan(sa.ranges[BeamAt(sa, 0.0)]));
-  EXPECT_NEAR(sb.ranges[BeamAt(sb, 0.0)], 3.0 / std::cos(tilted.tilt_pitch_rad), 1e-6);
+  EXPECT_TRUE(std::isnan(sa.ranges[sa.NearestBeam(0.0)]));
+  EXPECT_NEAR(sb.ranges[sb.NearestBeam(0.0)], 3.0 / std::cos(tilted.tilt_pitch_rad), 1e-6);
 }
 
 TEST(LidarEffectsTest, YawOffsetRotatesWhatTheScanShows) {
@@ -181,7 +176,7 @@ TEST(LidarEffectsTest, DarkSurfacesDropMoreBeams) {
   int dark_drops = 0, bright_drops = 0, dark_n = 0, bright_n = 0;
   for (int k = 0; k < 20; ++k) {
     const auto scan = lidar.Scan(world, Pose2());
-    for (std::size_t i = BeamAt(scan, -1.2); i <= BeamAt(scan, 1.2); ++i) {
+    for (std::size_t i = scan.NearestBeam(-1.2); i <= scan.NearestBeam(1.2); ++i) {
       const bool is_dark = scan.BeamAngle(i) < -0.01;
       const bool is_bright = scan.BeamAngle(i) > 0.01;
       if (is_dark) ++dark_n, dark_drops += std::isnan(scan.ranges[i]);
@@ -208,8 +203,8 @@ TEST(LidarEffectsTest, IntensityFollowsReflectivityAndRange) {
   Lidar lidar(config, 1);
   const auto scan = lidar.Scan(world, Pose2());
   const double a = 0.2;  // symmetric beams: same range and incidence, 4x the reflectivity
-  const double ib = scan.intensities[BeamAt(scan, a)];
-  const double id = scan.intensities[BeamAt(scan, -a)];
+  const double ib = scan.intensities[scan.NearestBeam(a)];
+  const double id = scan.intensities[scan.NearestBeam(-a)];
   EXPECT_GT(id, 0.0);
   EXPECT_NEAR(ib / id, 4.0, 1e-6);
 }

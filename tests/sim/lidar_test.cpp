@@ -12,12 +12,6 @@ namespace {
 
 using geometry::Pose2;
 
-/// The index of the beam nearest to a bearing.
-std::size_t BeamAt(const geometry::LaserScan& scan, double bearing_rad) {
-  return static_cast<std::size_t>(
-      std::lround((bearing_rad - scan.angle_min) / scan.angle_increment));
-}
-
 /// A closed square room of half-size `half_m` around the origin.
 void AddRoom(World* world, double half_m) {
   world->AddWall({{-half_m, -half_m}, {half_m, -half_m}, {half_m, half_m}, {-half_m, half_m}},
@@ -42,7 +36,7 @@ TEST(LidarTest, IdealScanMeasuresDistanceToRoundPost) {
   world.AddRoundPost(Eigen::Vector2d(3.0, 1.0), 0.1);
   Lidar lidar(IdealLidarConfig(), 1);
   const auto scan = lidar.Scan(world, Pose2(1.0, 1.0, 0.0));  // post 2 m straight ahead
-  EXPECT_NEAR(scan.ranges[BeamAt(scan, 0.0)], 2.0 - 0.1, 1e-9);
+  EXPECT_NEAR(scan.ranges[scan.NearestBeam(0.0)], 2.0 - 0.1, 1e-9);
 }
 
 TEST(LidarTest, BeamsMissingEverythingAreNaN) {
@@ -50,7 +44,7 @@ TEST(LidarTest, BeamsMissingEverythingAreNaN) {
   world.AddRoundPost(Eigen::Vector2d(3.0, 0.0), 0.1);
   Lidar lidar(IdealLidarConfig(), 1);
   const auto scan = lidar.Scan(world, Pose2());
-  EXPECT_TRUE(std::isnan(scan.ranges[BeamAt(scan, std::numbers::pi / 2)]));
+  EXPECT_TRUE(std::isnan(scan.ranges[scan.NearestBeam(std::numbers::pi / 2)]));
   EXPECT_TRUE(std::isnan(scan.ranges.front()));
 }
 
@@ -65,9 +59,9 @@ TEST(LidarTest, RotatedBoxCornerAndObliqueWall) {
   // The LiDAR faces +x from (0, 0) rotated by 30 deg: the beam at bearing -30 deg points at +x.
   const double yaw = std::numbers::pi / 6;
   const auto scan = lidar.Scan(world, Pose2(0.0, 0.0, yaw));
-  EXPECT_NEAR(scan.ranges[BeamAt(scan, -yaw)], 3.0 - std::sqrt(0.5), 1e-9);
+  EXPECT_NEAR(scan.ranges[scan.NearestBeam(-yaw)], 3.0 - std::sqrt(0.5), 1e-9);
   // A beam at world angle phi hits the wall y = 4 at 4 / sin(phi).
-  const std::size_t i = BeamAt(scan, std::numbers::pi / 3);
+  const std::size_t i = scan.NearestBeam(std::numbers::pi / 3);
   const double phi = yaw + scan.BeamAngle(i);
   EXPECT_NEAR(scan.ranges[i], 4.0 / std::sin(phi), 1e-9);
 }
@@ -114,7 +108,7 @@ TEST(LidarTest, RangeNoiseGrowsWithRange) {
   for (int k = 0; k < 30; ++k) {
     const auto labelled = lidar.ScanLabelled(
         world, [](double) { return Pose2(); }, 0.0);
-    const std::size_t i = BeamAt(labelled.scan, 0.0);
+    const std::size_t i = labelled.scan.NearestBeam(0.0);
     for (std::size_t j = i - 10; j <= i + 10; ++j) {  // beams near 10 m
       const double err = labelled.scan.ranges[j] - labelled.truth[j].true_range_m;
       sum_sq += err * err;
