@@ -69,12 +69,22 @@ nlohmann::json DetectionJson(const perception::Detection& d,
   nlohmann::json cov = nlohmann::json::array();
   for (int r = 0; r < 3; ++r)
     cov.push_back({d.covariance(r, 0), d.covariance(r, 1), d.covariance(r, 2)});
-  nlohmann::json j = {{"model", d.model},       {"x", d.T_lidar_shelf.x},
-                      {"y", d.T_lidar_shelf.y}, {"yaw", d.T_lidar_shelf.yaw},
-                      {"length", d.length_m},   {"width", d.width_m},
-                      {"legs", legs},           {"legs_used", d.legs_used},
-                      {"err_sum", d.err_sum},   {"cost", d.cost},
-                      {"covariance", cov}};
+  nlohmann::json j = {{"model", d.model},
+                      {"x", d.T_lidar_shelf.x},
+                      {"y", d.T_lidar_shelf.y},
+                      {"yaw", d.T_lidar_shelf.yaw},
+                      {"length", d.length_m},
+                      {"width", d.width_m},
+                      {"legs", legs},
+                      {"legs_used", d.legs_used},
+                      {"err_sum", d.err_sum},
+                      {"cost", d.cost},
+                      {"covariance", cov},
+                      {"confidence", d.confidence},
+                      {"legs_visible", d.legs_visible},
+                      {"legs_occluded", d.legs_occluded},
+                      {"interior_points", d.interior_points},
+                      {"leg_width_error", d.leg_width_error_m}};
   if (T_base_lidar) j["base"] = PoseJson(perception::ShelfInBase(d, *T_base_lidar));
   if (T_map_base) {
     j["map"] =
@@ -90,7 +100,15 @@ nlohmann::json StatsJson(const perception::DetectionStats& s) {
           {"trailing_removed", s.trailing_removed},
           {"leg_candidates", s.leg_candidates},
           {"leg_sets", s.leg_sets},
-          {"model_pairs", s.model_pairs}};
+          {"model_pairs", s.model_pairs},
+          {"hypotheses", s.hypotheses},
+          {"rejected",
+           {{"fit", s.rejected.fit},
+            {"model", s.rejected.model},
+            {"three_leg_error", s.rejected.three_leg_error},
+            {"leg_seen_through", s.rejected.leg_seen_through},
+            {"low_confidence", s.rejected.low_confidence},
+            {"lost_legs", s.rejected.lost_legs}}}};
 }
 
 int RunDetect(const DetectOptions& opt) {

@@ -50,8 +50,22 @@ void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
   f.Read("max_iterations", c.max_iterations);
   f.Read("min_leg_sigma_m", c.min_leg_sigma_m);
   f.Read("max_rms_m", c.max_rms_m);
+  f.RejectUnknown();
+}
+
+void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
+  f.Read("present_margin_m", c.present_margin_m);
+  f.Read("through_margin_m", c.through_margin_m);
+  f.Read("min_through_beams", c.min_through_beams);
+  f.Read("leg_position_tolerance_m", c.leg_position_tolerance_m);
   f.Read("interior_margin_m", c.interior_margin_m);
-  f.Read("max_interior_points", c.max_interior_points);
+  f.Read("occluded_credit", c.occluded_credit);
+  f.Read("unobserved_credit", c.unobserved_credit);
+  f.Read("fit_scale_m", c.fit_scale_m);
+  f.Read("interior_scale_points", c.interior_scale_points);
+  f.Read("foreign_leg_points", c.foreign_leg_points);
+  f.Read("leg_width_scale_m", c.leg_width_scale_m);
+  f.Read("min_confidence", c.min_confidence);
   f.RejectUnknown();
 }
 
@@ -66,6 +80,7 @@ perception::DetectorConfig ReadDetectorConfig(const std::string& path) {
   ReadModelMatch(YamlFields(top.Child("model_match"), path, "model_match"), config.model_match);
   ReadLegFit(YamlFields(top.Child("leg_fit"), path, "leg_fit"), config.leg_fit);
   ReadShelfFit(YamlFields(top.Child("shelf_fit"), path, "shelf_fit"), config.shelf_fit);
+  ReadEvidence(YamlFields(top.Child("evidence"), path, "evidence"), config.evidence);
   top.RejectUnknown();
   // The rules live with the struct; here they only gain the file name.
   if (const auto v = perception::FindConfigViolation(config)) {

@@ -21,6 +21,24 @@ struct Detection {
   double err_sum = 0.0;               ///< Eq. 2 err_L + err_W of the matched model [m]
   double cost = 0.0;                  ///< final cost of the shelf-pose fit [m^2]
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< of (x, y, yaw) [m^2, rad^2]
+  /// [0, 1] how strongly the scan supports this shelf (legs seen, hidden or unobserved, fit
+  /// error, free space inside the footprint, leg sizes); see perception::ShelfConfidence.
+  double confidence = 0.0;
+  int legs_visible = 0;            ///< model legs seen in the scan (3 or 4)
+  int legs_occluded = 0;           ///< model legs hidden behind something nearer
+  int interior_points = 0;         ///< scan points inside the footprint (occluders excused)
+  double leg_width_error_m = 0.0;  ///< [m] worst seen leg width against the model's, beyond a beam
+};
+
+/// Why hypotheses (leg sets paired with a model) were not returned, one count per hypothesis
+/// and reason (the first reason that applied).
+struct RejectionCounts {
+  int fit = 0;               ///< shelf fit failed, did not converge or left legs off the model
+  int model = 0;             ///< Eq. 2 on the fitted legs: no longer this model's size
+  int three_leg_error = 0;   ///< 3-leg set beyond the stricter three_leg_err_sum_m
+  int leg_seen_through = 0;  ///< beams pass where a leg of the hypothesis should stand
+  int low_confidence = 0;    ///< the evidence is too weak (confidence < min_confidence)
+  int lost_legs = 0;         ///< its legs went to a better-supported shelf (or a better model)
 };
 
 /// Counters that tell where candidates were dropped; useful when tuning on real scans.
@@ -32,6 +50,8 @@ struct DetectionStats {
   int leg_candidates = 0;    ///< clusters that fit the size of some model's leg
   int leg_sets = 0;          ///< 3- and 4-leg sets that passed the geometric search
   int model_pairs = 0;       ///< points-model pairs that passed Eq. 2 screening
+  int hypotheses = 0;        ///< points-model pairs fitted and scored (one per pair)
+  RejectionCounts rejected;  ///< why hypotheses were not returned
 };
 
 struct DetectionResult {

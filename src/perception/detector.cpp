@@ -7,17 +7,20 @@
 #include <stdexcept>
 
 #include "geometry/angle.hpp"
+#include "perception/leg_competition.hpp"
 #include "perception/leg_fit.hpp"
 #include "perception/leg_search.hpp"
 #include "perception/model_match.hpp"
+#include "perception/shelf_evidence.hpp"
 #include "perception/shelf_fit.hpp"
 
 namespace shelfdock::perception {
 namespace {
 
-struct Candidate {
+// One points-model pair, fitted and scored: a shelf hypothesis.
+struct Hypothesis {
   Detection detection;
-  std::array<int, 4> clusters{-1, -1, -1, -1};
+  std::array<int, 4> clusters{-1, -1, -1, -1};  // leg candidates it is made of
 };
 
 // Leg fits depend only on the cluster and the leg section, so they are shared between the
@@ -44,65 +47,75 @@ struct LegFitCache {
   }
 };
 
-// Free-space check: at the scan height a shelf's footprint is empty between its legs.
-int CountInteriorPoints(const std::vector<ScanPoint>& points, const geometry::Pose2& T_lidar_shelf,
-                        const geometry::ShelfModel& model, double margin_m) {
-  const geometry::Pose2 T_shelf_lidar = T_lidar_shelf.inverse();
-  const double hx = 0.5 * model.length_m - margin_m;
-  const double hy = 0.5 * model.width_m - margin_m;
-  int inside = 0;
-  for (const auto& q : points) {
-    const Eigen::Vector2d p = T_shelf_lidar * q.p;
-    if (std::abs(p.x()) < hx && std::abs(p.y()) < hy) ++inside;
-  }
-  return inside;
-}
+// Fits one points-model pair (3.3 leg centres, 3.4 shelf pose), screens it and weighs the
+// scan's evidence. nullopt (with the reason counted) when it is not a shelf of this model.
+struct ScoreInputs {
+  const PreprocessOutput& pre;
+  double angle_increment_rad;
+  const std::optional<geometry::Pose2>& T_lidar_preset;
+  const DetectorConfig& config;
+};
 
-// A 3-leg set claims its fourth leg is hidden or missed. Real clutter (furniture, the robot's
-// own frame) forms right triangles of model size; what gives it away is that the beams toward
-// the predicted fourth leg pass through it to something clearly farther, with no dip in range
-// (a leg too thin for a clean return still pulls its mixed points nearer than their
-// neighbours). Beams with no return are no evidence either way (dark legs drop out).
-bool MissingLegContradicted(const std::vector<ScanPoint>& points, const Eigen::Vector2d& leg,
-                            double leg_extent_m, double angle_increment_rad) {
-  constexpr double kMargin_m = 0.15;  // farther than this behind the leg: seen through it
-  constexpr double kDip_m = 0.05;     // nearer than the neighbours by this: something there
-  const double range = leg.norm();
-  if (range < 1e-6) return false;
-  const double bearing = std::atan2(leg.y(), leg.x());
-  const double half = std::atan2(0.5 * leg_extent_m, range) + 0.5 * std::abs(angle_increment_rad);
-  int through = 0;
-  double window_min = std::numeric_limits<double>::infinity();
-  double outside_min = std::numeric_limits<double>::infinity();
-  for (const auto& q : points) {
-    const double d = std::abs(geometry::AngleDiff(q.angle, bearing));
-    if (d <= half) {
-      if (q.range <= range + kMargin_m) return false;  // a return at or before the leg
-      ++through;
-      window_min = std::min(window_min, q.range);
-    } else if (d <= half + 2.0 * std::abs(angle_increment_rad)) {
-      outside_min = std::min(outside_min, q.range);
-    }
+std::optional<Hypothesis> Score(const LegSet& set, const geometry::ShelfModel& model,
+                                int model_index, double hint, const ScoreInputs& in,
+                                LegFitCache& cache, RejectionCounts& rejected) {
+  const DetectorConfig& config = in.config;
+  std::array<Eigen::Vector2d, 4> legs{};
+  for (int i = 0; i < set.count; ++i) {
+    legs[i] = cache.Get(set.legs[i], model, hint, in.pre.candidates, config.leg_fit).centre;
   }
-  if (through < 2) return false;
-  return window_min > outside_min - kDip_m;
-}
-
-// A 3-leg set around the sensor: the LiDAR would be under the shelf. Unless the preset says the
-// robot is under it, one hidden leg there is likelier furniture (seen on the real bags) than a
-// shelf, and docking stops using the LiDAR before it gets under the shelf anyway.
-bool SensorInsideFootprint(const geometry::Pose2& T_lidar_shelf,
-                           const geometry::ShelfModel& model) {
-  const Eigen::Vector2d p = T_lidar_shelf.inverse() * Eigen::Vector2d::Zero();
-  return std::abs(p.x()) < 0.5 * model.length_m && std::abs(p.y()) < 0.5 * model.width_m;
-}
-
-int SharedClusters(const Candidate& a, const Candidate& b) {
-  int shared = 0;
-  for (int i : a.clusters) {
-    if (i >= 0 && std::find(b.clusters.begin(), b.clusters.end(), i) != b.clusters.end()) ++shared;
+  const auto fit = FitShelf(legs, set.count, model, config.shelf_fit);
+  if (!fit || !fit->converged || fit->rms_m > config.shelf_fit.max_rms_m) {
+    ++rejected.fit;
+    return std::nullopt;
   }
-  return shared;
+  // Eq. 2 again on the fitted (unbiased) leg centres: this is what tells close models apart.
+  const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, model_index);
+  if (!PassesThresholds(refined, config.model_match)) {
+    ++rejected.model;
+    return std::nullopt;
+  }
+  // Two edges constrain a shelf less than four: a 3-leg set must match more tightly.
+  if (set.count == 3 && refined.err_sum > config.model_match.three_leg_err_sum_m) {
+    ++rejected.three_leg_error;
+    return std::nullopt;
+  }
+  std::array<int, 4> corner_candidate{-1, -1, -1, -1};
+  for (int i = 0; i < set.count; ++i) corner_candidate[fit->corner_of_leg[i]] = set.legs[i];
+  ShelfEvidence ev = GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre,
+                                    in.angle_increment_rad, config.evidence);
+  // A leg that beams pass straight through is not there: whatever made the other legs, it is
+  // not this shelf (clutter forming a right triangle, or legs of two shelves).
+  if (ev.legs_seen_through > 0) {
+    ++rejected.leg_seen_through;
+    return std::nullopt;
+  }
+  ev.confidence = ShelfConfidence(ev, refined.err_sum, config.evidence);
+  if (ev.confidence < config.evidence.min_confidence) {
+    ++rejected.low_confidence;
+    return std::nullopt;
+  }
+  Hypothesis h;
+  h.clusters = set.legs;
+  Detection& d = h.detection;
+  d.model = model.name;
+  d.T_lidar_shelf = fit->T_lidar_shelf;
+  d.length_m = fit->length_m;
+  d.width_m = fit->width_m;
+  d.legs.assign(legs.begin(), legs.begin() + set.count);
+  d.legs_used = set.count;
+  d.err_sum = refined.err_sum;
+  d.cost = fit->cost;
+  d.covariance = fit->covariance;
+  d.confidence = ev.confidence;
+  d.legs_visible = ev.legs_seen;
+  d.legs_occluded = ev.legs_occluded;
+  d.interior_points = ev.interior_points;
+  d.leg_width_error_m = ev.leg_width_error_m;
+  const double reference =
+      in.T_lidar_preset ? in.T_lidar_preset->yaw : std::atan2(d.T_lidar_shelf.y, d.T_lidar_shelf.x);
+  d.T_lidar_shelf.yaw = ResolveHeading(d.T_lidar_shelf.yaw, reference, model.IsSquare());
+  return h;
 }
 
 }  // namespace
@@ -149,7 +162,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   stats.leg_sets = static_cast<int>(sets.size());
 
   LegFitCache cache;
-  std::vector<Candidate> candidates;
+  const ScoreInputs inputs{pre, angle_increment_rad, T_lidar_preset, config_};
+  std::vector<Hypothesis> hypotheses;
   for (const LegSet& set : sets) {
     std::array<Eigen::Vector2d, 4> rough{};
     for (int i = 0; i < set.count; ++i) rough[i] = centres[set.legs[i]];
@@ -160,78 +174,36 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     const Eigen::Vector2d long_edge = edges.first_edge_long ? Eigen::Vector2d(rough[1] - rough[0])
                                                             : Eigen::Vector2d(rough[2] - rough[1]);
     const double hint = std::atan2(long_edge.y(), long_edge.x());
-
-    std::optional<Candidate> best;
     for (const ModelPair& pair : pairs) {
-      const geometry::ShelfModel& model = models_[pair.model];
-      // 3.3 leg centres, then 3.4 shelf pose.
-      std::array<Eigen::Vector2d, 4> legs{};
-      for (int i = 0; i < set.count; ++i) {
-        legs[i] = cache.Get(set.legs[i], model, hint, pre.candidates, config_.leg_fit).centre;
-      }
-      const auto fit = FitShelf(legs, set.count, model, config_.shelf_fit);
-      if (!fit || !fit->converged || fit->rms_m > config_.shelf_fit.max_rms_m) continue;
-      // Eq. 2 again on the fitted (unbiased) leg centres: this is what tells close models apart.
-      const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, pair.model);
-      if (!PassesThresholds(refined, config_.model_match)) continue;
-      if (set.count == 3 && refined.err_sum > config_.model_match.three_leg_err_sum_m) continue;
-      if (set.count == 3 && SensorInsideFootprint(fit->T_lidar_shelf, model) &&
-          !(T_lidar_preset && SensorInsideFootprint(*T_lidar_preset, model))) {
-        continue;
-      }
-      if (set.count == 3 && MissingLegContradicted(points, legs[0] + legs[2] - legs[1],
-                                                   std::min(model.leg.length_m, model.leg.width_m),
-                                                   angle_increment_rad)) {
-        continue;
-      }
-      if (best && refined.err_sum >= best->detection.err_sum) continue;
-      if (config_.shelf_fit.max_interior_points >= 0 &&
-          CountInteriorPoints(points, fit->T_lidar_shelf, model,
-                              config_.shelf_fit.interior_margin_m) >
-              config_.shelf_fit.max_interior_points) {
-        continue;
-      }
-      Candidate c;
-      c.clusters = set.legs;
-      Detection& d = c.detection;
-      d.model = model.name;
-      d.T_lidar_shelf = fit->T_lidar_shelf;
-      d.length_m = fit->length_m;
-      d.width_m = fit->width_m;
-      d.legs.assign(legs.begin(), legs.begin() + set.count);
-      d.legs_used = set.count;
-      d.err_sum = refined.err_sum;
-      d.cost = fit->cost;
-      d.covariance = fit->covariance;
-      const double reference =
-          T_lidar_preset ? T_lidar_preset->yaw : std::atan2(d.T_lidar_shelf.y, d.T_lidar_shelf.x);
-      d.T_lidar_shelf.yaw = ResolveHeading(d.T_lidar_shelf.yaw, reference, model.IsSquare());
-      best = std::move(c);
+      ++stats.hypotheses;
+      auto h = Score(set, models_[pair.model], pair.model, hint, inputs, cache, stats.rejected);
+      if (h) hypotheses.push_back(std::move(*h));
     }
-    if (best) candidates.push_back(std::move(*best));
   }
 
-  // One detection per shelf: a set sharing two or more legs with a better one is the same
-  // shelf (or a mix of neighbours); more legs first, then the smaller err_sum.
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-    if (a.detection.legs_used != b.detection.legs_used) {
-      return a.detection.legs_used > b.detection.legs_used;
+  // Hypotheses compete for legs: the disjoint set with the most support wins. The weight is
+  // the confidence times four, i.e. the expected number of legs it stands for, so two real
+  // neighbours outweigh a phantom made of their legs, and four seen legs outweigh three.
+  std::vector<std::array<int, 4>> legs;
+  std::vector<double> weights;
+  for (const Hypothesis& h : hypotheses) {
+    legs.push_back(h.clusters);
+    weights.push_back(4.0 * h.detection.confidence);
+  }
+  const std::vector<int> picked = SelectDisjoint(legs, weights);
+  stats.rejected.lost_legs += static_cast<int>(hypotheses.size() - picked.size());
+  std::vector<Detection> kept;
+  for (int i : picked) kept.push_back(std::move(hypotheses[i].detection));
+  // Ranking: with a preset, nearest to it first (paper 3.2); otherwise the most confident.
+  std::stable_sort(kept.begin(), kept.end(), [&](const Detection& a, const Detection& b) {
+    if (T_lidar_preset) {
+      return geometry::Distance(a.T_lidar_shelf, *T_lidar_preset) <
+             geometry::Distance(b.T_lidar_shelf, *T_lidar_preset);
     }
-    return a.detection.err_sum < b.detection.err_sum;
+    if (a.legs_visible != b.legs_visible) return a.legs_visible > b.legs_visible;
+    return a.confidence > b.confidence;
   });
-  std::vector<Candidate> kept;
-  for (auto& c : candidates) {
-    const bool duplicate = std::any_of(
-        kept.begin(), kept.end(), [&](const Candidate& k) { return SharedClusters(c, k) >= 2; });
-    if (!duplicate) kept.push_back(std::move(c));
-  }
-  if (T_lidar_preset) {
-    std::stable_sort(kept.begin(), kept.end(), [&](const Candidate& a, const Candidate& b) {
-      return geometry::Distance(a.detection.T_lidar_shelf, *T_lidar_preset) <
-             geometry::Distance(b.detection.T_lidar_shelf, *T_lidar_preset);
-    });
-  }
-  for (auto& c : kept) result.detections.push_back(std::move(c.detection));
+  result.detections = std::move(kept);
   return result;
 }
 

@@ -59,8 +59,23 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(f.max_iterations >= 1, "shelf_fit.max_iterations", ">= 1");
   k.Check(f.min_leg_sigma_m > 0.0, "shelf_fit.min_leg_sigma_m", "> 0");
   k.Check(f.max_rms_m > 0.0, "shelf_fit.max_rms_m", "> 0");
-  k.Check(f.interior_margin_m >= 0.0, "shelf_fit.interior_margin_m", ">= 0");
-  k.Check(f.max_interior_points >= -1, "shelf_fit.max_interior_points", ">= -1 (-1: off)");
+
+  const auto& e = c.evidence;
+  k.Check(e.present_margin_m > 0.0, "evidence.present_margin_m", "> 0");
+  k.Check(e.through_margin_m > 0.0, "evidence.through_margin_m", "> 0");
+  k.Check(e.min_through_beams >= 1, "evidence.min_through_beams", ">= 1");
+  k.Check(e.leg_position_tolerance_m >= 0.0, "evidence.leg_position_tolerance_m", ">= 0");
+  k.Check(e.interior_margin_m >= 0.0, "evidence.interior_margin_m", ">= 0");
+  k.Check(e.occluded_credit >= 0.0 && e.occluded_credit <= 1.0, "evidence.occluded_credit",
+          "in [0, 1]");
+  k.Check(e.unobserved_credit >= 0.0 && e.unobserved_credit <= 1.0, "evidence.unobserved_credit",
+          "in [0, 1]");
+  k.Check(e.fit_scale_m > 0.0, "evidence.fit_scale_m", "> 0");
+  k.Check(e.interior_scale_points > 0.0, "evidence.interior_scale_points", "> 0");
+  k.Check(e.foreign_leg_points >= 0.0, "evidence.foreign_leg_points", ">= 0");
+  k.Check(e.leg_width_scale_m > 0.0, "evidence.leg_width_scale_m", "> 0");
+  k.Check(e.min_confidence >= 0.0 && e.min_confidence < 1.0, "evidence.min_confidence",
+          "in [0, 1)");
   return k.Result();
 }
 

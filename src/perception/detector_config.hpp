@@ -51,12 +51,28 @@ struct LegFitConfig {
 
 /// Paper 3.4: shelf centre and heading by nonlinear least squares (Eq. 8-11).
 struct ShelfFitConfig {
-  double loss_scale_m = 0.02;       ///< [m] Cauchy scale of the leg residuals
-  int max_iterations = 25;          ///< [-] solver iterations
-  double min_leg_sigma_m = 0.003;   ///< [m] floor of the per-leg std used for the covariance
-  double max_rms_m = 0.03;          ///< [m] fitted legs farther (RMS) from the model: rejected
-  double interior_margin_m = 0.06;  ///< [m] shrink of the footprint for the free-space check
-  int max_interior_points = 3;      ///< [-] scan points allowed inside the footprint; -1: off
+  double loss_scale_m = 0.02;      ///< [m] Cauchy scale of the leg residuals
+  int max_iterations = 25;         ///< [-] solver iterations
+  double min_leg_sigma_m = 0.003;  ///< [m] floor of the per-leg std used for the covariance
+  double max_rms_m = 0.03;         ///< [m] fitted legs farther (RMS) from the model: rejected
+};
+
+/// What the scan says about each hypothesis (legs seen, hidden or seen through; free space
+/// inside the footprint; leg sizes) and how that makes its confidence (see ShelfConfidence).
+struct EvidenceConfig {
+  double present_margin_m = 0.08;  ///< [m] a return this close to a leg's range: it is there
+  double through_margin_m = 0.15;  ///< [m] returns this far beyond a leg: the beam went through
+  int min_through_beams = 2;       ///< [-] beams through a leg that prove it absent
+  double leg_position_tolerance_m = 0.005;  ///< [m] error of a predicted leg position: only
+                                            ///< beams this far inside its edge prove absence
+  double interior_margin_m = 0.06;     ///< [m] shrink of the footprint for the free-space check
+  double occluded_credit = 0.75;       ///< [-] a hidden leg counts this much of a seen one
+  double unobserved_credit = 0.5;      ///< [-] a leg no beam reaches counts this much
+  double fit_scale_m = 0.03;           ///< [m] err_sum that halves the confidence
+  double interior_scale_points = 4.0;  ///< [-] points inside the footprint that halve it
+  double foreign_leg_points = 6.0;     ///< [-] a leg-sized cluster inside counts as this many
+  double leg_width_scale_m = 0.03;     ///< [m] leg width error (beyond one beam) that halves it
+  double min_confidence = 0.3;         ///< [-] below this a hypothesis is not returned
 };
 
 struct DetectorConfig {
@@ -65,6 +81,7 @@ struct DetectorConfig {
   ModelMatchConfig model_match;
   LegFitConfig leg_fit;
   ShelfFitConfig shelf_fit;
+  EvidenceConfig evidence;
 };
 
 /// An impossible parameter: its dotted key (e.g. `preprocess.cluster_gap_m`) and the rule.

@@ -96,8 +96,7 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
   // Robust loss by iteratively reweighted least squares (Huber weights w = min(1, k / |r|)),
   // with Ceres' TinySolver (dense LM on 2 parameters) per round: far less overhead than
   // ceres::Problem for a handful of residuals.
-  thread_local std::vector<double> weights;
-  weights.assign(points.size(), 1.0);
+  std::vector<double> weights(points.size(), 1.0);
   LegRayCost cost{&points,
                   weights.data(),
                   round,

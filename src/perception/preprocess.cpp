@@ -6,17 +6,6 @@
 namespace shelfdock::perception {
 namespace {
 
-void UpdateShape(Cluster& c) {
-  c.centroid.setZero();
-  c.extent_m = 0.0;
-  if (c.points.empty()) return;
-  for (const auto& q : c.points) {
-    c.centroid += q.p;
-    c.extent_m = std::max(c.extent_m, (q.p - c.points.front().p).norm());
-  }
-  c.centroid /= static_cast<double>(c.points.size());
-}
-
 // Largest visible extent of a leg: the section's diagonal (a circle's diameter).
 double LegExtent(const geometry::LegModel& leg) {
   return leg.shape == geometry::LegShape::kCircle ? leg.length_m
@@ -55,15 +44,40 @@ bool SameCluster(const ScanPoint& a, const ScanPoint& b, double alpha,
 }
 }  // namespace
 
+std::vector<ClusterSpan> ClusterSpans(const std::vector<ScanPoint>& points,
+                                      double angle_increment_rad, const PreprocessConfig& config) {
+  std::vector<ClusterSpan> spans;
+  const double alpha = std::abs(angle_increment_rad);
+  std::size_t begin = 0;
+  for (std::size_t i = 1; i <= points.size(); ++i) {
+    if (i < points.size() && SameCluster(points[i - 1], points[i], alpha, config)) continue;
+    ClusterSpan span;
+    span.begin = begin;
+    span.end = i;
+    double extent2 = 0.0;
+    for (std::size_t k = begin; k < i; ++k) {
+      span.centroid += points[k].p;
+      extent2 = std::max(extent2, (points[k].p - points[begin].p).squaredNorm());
+    }
+    span.centroid /= static_cast<double>(i - begin);
+    span.extent_m = std::sqrt(extent2);
+    spans.push_back(span);
+    begin = i;
+  }
+  return spans;
+}
+
 std::vector<Cluster> ClusterPoints(const std::vector<ScanPoint>& points, double angle_increment_rad,
                                    const PreprocessConfig& config) {
   std::vector<Cluster> clusters;
-  const double alpha = std::abs(angle_increment_rad);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (i == 0 || !SameCluster(points[i - 1], points[i], alpha, config)) clusters.emplace_back();
-    clusters.back().points.push_back(points[i]);
+  for (const ClusterSpan& span : ClusterSpans(points, angle_increment_rad, config)) {
+    Cluster c;
+    c.points.assign(points.begin() + static_cast<std::ptrdiff_t>(span.begin),
+                    points.begin() + static_cast<std::ptrdiff_t>(span.end));
+    c.centroid = span.centroid;
+    c.extent_m = span.extent_m;
+    clusters.push_back(std::move(c));
   }
-  for (auto& c : clusters) UpdateShape(c);
   return clusters;
 }
 
@@ -76,8 +90,7 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad
                          const PreprocessConfig& config) {
   if (pts.size() < 2) return 0;
   const double alpha = std::abs(angle_increment_rad);
-  thread_local std::vector<char> drop;
-  drop.assign(pts.size(), 0);
+  std::vector<char> drop(pts.size(), 0);
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
     if (std::abs(pts[i + 1].beam - pts[i].beam) > 2) continue;  // not neighbours
     const bool first_far = pts[i].range > pts[i + 1].range;
@@ -101,24 +114,30 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad
   return removed;
 }
 
-bool FitsLegSize(const Cluster& cluster, double angle_increment_rad,
-                 const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config) {
-  if (cluster.points.empty() || models.empty()) return false;
+bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
+                 double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
+                 const PreprocessConfig& config) {
+  if (num_points == 0 || models.empty()) return false;
   double max_extent = 0.0;
   double min_width = models.front().leg.width_m;
   for (const auto& m : models) {
     max_extent = std::max(max_extent, LegExtent(m.leg));
     min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
   }
-  if (cluster.extent_m > max_extent + config.leg_extent_margin_m) return false;
+  if (extent_m > max_extent + config.leg_extent_margin_m) return false;
   // Beams expected across the smallest leg at this range: a short-range cluster of one or two
   // points is noise or a mixed point, not a leg.
-  const double range = cluster.centroid.norm();
-  const double spacing = std::max(range * std::abs(angle_increment_rad), 1e-6);
+  const double spacing = std::max(centroid.norm() * std::abs(angle_increment_rad), 1e-6);
   const double expected = min_width / spacing;
   const int needed = std::max(config.min_points,
                               static_cast<int>(std::floor(config.min_point_fraction * expected)));
-  return static_cast<int>(cluster.points.size()) >= needed;
+  return static_cast<int>(num_points) >= needed;
+}
+
+bool FitsLegSize(const Cluster& cluster, double angle_increment_rad,
+                 const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config) {
+  return FitsLegSize(cluster.centroid, cluster.extent_m, cluster.points.size(), angle_increment_rad,
+                     models, config);
 }
 
 PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_increment_rad,
@@ -134,45 +153,32 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   // and the background, usually farther from both than the break distance, so it would form a
   // cluster of its own and escape that test: Eq. 1 is applied to beam neighbours before
   // clustering instead (the leg's own point is the near one and is kept).
-  std::vector<ScanPoint> kept = points;
-  out.trailing_removed = RemoveTrailingPoints(kept, angle_increment_rad, config);
+  out.points = points;
+  out.trailing_removed = RemoveTrailingPoints(out.points, angle_increment_rad, config);
 
   // Clustering runs on all points and the ROI is applied to whole clusters: cutting points at
   // the ROI circle first would turn the clipped end of a wall into a leg-sized fragment.
-  // Clusters are index spans into `kept`; only candidates are copied out (a scan has a few
-  // hundred clusters, most of them wall pieces: no allocation for those).
-  const double alpha = std::abs(angle_increment_rad);
-  Cluster probe;
-  std::size_t begin = 0;
-  for (std::size_t i = 1; i <= kept.size(); ++i) {
-    if (i < kept.size() && SameCluster(kept[i - 1], kept[i], alpha, config)) continue;
-    const std::size_t end = i;
-    // Shape of [begin, end) without copying: centroid and extent from the first point.
-    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-    double extent2 = 0.0;
-    for (std::size_t k = begin; k < end; ++k) {
-      centroid += kept[k].p;
-      extent2 = std::max(extent2, (kept[k].p - kept[begin].p).squaredNorm());
-    }
-    centroid /= static_cast<double>(end - begin);
-    const std::size_t first = begin;
-    begin = end;
-    if (T_lidar_preset && (centroid - T_lidar_preset->translation()).norm() > roi_radius) {
+  // Only candidates are copied out (a scan has a few hundred clusters, most of them wall
+  // pieces).
+  out.spans = ClusterSpans(out.points, angle_increment_rad, config);
+  for (std::size_t si = 0; si < out.spans.size(); ++si) {
+    const ClusterSpan& span = out.spans[si];
+    if (T_lidar_preset && (span.centroid - T_lidar_preset->translation()).norm() > roi_radius) {
       continue;
     }
     ++out.clusters;
-    out.roi_points += static_cast<int>(end - first);
-    probe.centroid = centroid;
-    probe.extent_m = std::sqrt(extent2);
-    probe.points.resize(end - first);  // FitsLegSize reads only the count
-    if (FitsLegSize(probe, angle_increment_rad, models, config)) {
-      Cluster c;
-      c.points.assign(kept.begin() + static_cast<std::ptrdiff_t>(first),
-                      kept.begin() + static_cast<std::ptrdiff_t>(end));
-      c.centroid = centroid;
-      c.extent_m = probe.extent_m;
-      out.candidates.push_back(std::move(c));
+    out.roi_points += static_cast<int>(span.size());
+    if (!FitsLegSize(span.centroid, span.extent_m, span.size(), angle_increment_rad, models,
+                     config)) {
+      continue;
     }
+    Cluster c;
+    c.points.assign(out.points.begin() + static_cast<std::ptrdiff_t>(span.begin),
+                    out.points.begin() + static_cast<std::ptrdiff_t>(span.end));
+    c.centroid = span.centroid;
+    c.extent_m = span.extent_m;
+    c.span = static_cast<int>(si);
+    out.candidates.push_back(std::move(c));
   }
   return out;
 }

@@ -25,9 +25,21 @@ struct Cluster {
   std::vector<ScanPoint> points;                       ///< beam order
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();  ///< [m] mean of the points (Eq. 3)
   double extent_m = 0.0;  ///< [m] largest distance of a point from the first one
+  int span = -1;          ///< index in PreprocessOutput::spans (-1 when built on its own)
+};
+
+/// A cluster as a span [begin, end) of a point vector in beam order, with its shape.
+struct ClusterSpan {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();  ///< [m] mean of the points (Eq. 3)
+  double extent_m = 0.0;  ///< [m] largest distance of a point from the first one
+  std::size_t size() const { return end - begin; }
 };
 
 struct PreprocessOutput {
+  std::vector<ScanPoint> points;    ///< valid points after the trailing-point filter
+  std::vector<ClusterSpan> spans;   ///< every cluster of `points` (inside the ROI or not)
   std::vector<Cluster> candidates;  ///< clusters that fit a leg of some model
   int roi_points = 0;               ///< points in clusters inside the ROI
   int clusters = 0;                 ///< clusters inside the ROI, before screening
@@ -37,9 +49,14 @@ struct PreprocessOutput {
 /// Ranges to points, skipping NaN, infinite, zero and out-of-[range_min, range_max] returns.
 std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan);
 
-/// Splits points (beam order) where the gap exceeds the range-adaptive break distance
-/// cluster_gap_m + cluster_gap_beams * r * |angle_increment| per beam step, or where more than
-/// cluster_max_missing_beams beams in between returned nothing.
+/// The clustering rule: splits points (beam order) where the gap exceeds the range-adaptive
+/// break distance cluster_gap_m + cluster_gap_beams * r * |angle_increment| per beam step, or
+/// where more than cluster_max_missing_beams beams in between returned nothing. Spans index into
+/// `points`; nothing is copied.
+std::vector<ClusterSpan> ClusterSpans(const std::vector<ScanPoint>& points,
+                                      double angle_increment_rad, const PreprocessConfig& config);
+
+/// ClusterSpans with each span's points copied out.
 std::vector<Cluster> ClusterPoints(const std::vector<ScanPoint>& points, double angle_increment_rad,
                                    const PreprocessConfig& config);
 
@@ -53,7 +70,10 @@ double TrailingAngle(double range_far_m, double range_near_m, double alpha_rad);
 int RemoveTrailingPoints(std::vector<ScanPoint>& points, double angle_increment_rad,
                          const PreprocessConfig& config);
 
-/// True when the cluster's extent and point count fit a leg of some model at its range.
+/// True when a cluster's extent and point count fit a leg of some model at its range.
+bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
+                 double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
+                 const PreprocessConfig& config);
 bool FitsLegSize(const Cluster& cluster, double angle_increment_rad,
                  const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config);
 

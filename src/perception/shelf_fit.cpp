@@ -85,9 +85,13 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
   constexpr int kIrlsRounds = 3;
   const double s2 = config.loss_scale_m * config.loss_scale_m;
   double robust_cost = 0.0;
+  bool solver_converged = false;
   for (int round = 0; round < kIrlsRounds; ++round) {
     const AutoDiff function(cost);
-    solver.Solve(function, &x);
+    const auto& summary = solver.Solve(function, &x);
+    // Converged: the last round stopped on a small gradient, step, cost or cost change, not on
+    // the iteration cap (with only 3 parameters LM needs a handful of iterations).
+    solver_converged = summary.status != decltype(solver)::HIT_MAX_ITERATIONS;
     // Cauchy: rho(e2) = s^2 log(1 + e2 / s^2), weight rho'(e2) = 1 / (1 + e2 / s^2).
     const geometry::Pose2 T(x(0), x(1), x(2));
     robust_cost = 0.0;
@@ -98,14 +102,16 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
     }
   }
   const bool finite = x.allFinite();
+  const bool converged = finite && solver_converged;
   const double yaw = geometry::WrapAngle(x(2));
   const double centre[2] = {x(0), x(1)};
 
   ShelfFitResult out;
   out.T_lidar_shelf = geometry::Pose2(centre[0], centre[1], yaw);
   out.cost = robust_cost;
-  out.converged = finite;
+  out.converged = converged;
   out.legs_used = count;
+  out.corner_of_leg = corner_of;
   out.length_m = edges.long_m;
   out.width_m = edges.short_m;
 

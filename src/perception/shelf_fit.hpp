@@ -18,8 +18,9 @@ struct ShelfFitResult {
   double length_m = 0.0;          ///< [m] mean long edge between the fitted leg centres
   double width_m = 0.0;           ///< [m] mean short edge between the fitted leg centres
   int legs_used = 0;              ///< 3 or 4
+  std::array<int, 4> corner_of_leg{-1, -1, -1, -1};      ///< model corner (LegCentres) of each leg
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< of (x, y, yaw)
-  bool converged = false;
+  bool converged = false;  ///< finite, and the solver stopped on its tolerances, not its cap
 };
 
 /// Paper 3.4: the shelf pose C = (c_x, c_y, c_alpha) from 3 or 4 fitted leg centres (cyclic

@@ -43,7 +43,8 @@ TEST(DetectorConfigYamlTest, ShippedFileHoldsTheStructDefaults) {
   EXPECT_EQ(read.leg_fit.loss_scale_m, def.leg_fit.loss_scale_m);
   EXPECT_EQ(read.leg_fit.pca_min_anisotropy, def.leg_fit.pca_min_anisotropy);
   EXPECT_EQ(read.shelf_fit.max_rms_m, def.shelf_fit.max_rms_m);
-  EXPECT_EQ(read.shelf_fit.max_interior_points, def.shelf_fit.max_interior_points);
+  EXPECT_EQ(read.evidence.min_confidence, def.evidence.min_confidence);
+  EXPECT_EQ(read.evidence.interior_scale_points, def.evidence.interior_scale_points);
 }
 
 TEST(DetectorConfigYamlTest, ReadsGivenKeysAndKeepsDefaultsForTheRest) {

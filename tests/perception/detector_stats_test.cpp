@@ -53,11 +53,15 @@ TEST(DetectorStatsTest, RightShelfAndAccuracyWithin3p5m) {
     if (res.detections.empty() || res.detections[0].model != model.name || e_c > 0.05) {
       std::printf(
           "[ stats ] missed %s standoff %.2f m bearing %.2f yaw %.2f: %s (legs %d); leg "
-          "candidates %d, sets %d, pairs %d\n",
+          "candidates %d, sets %d, pairs %d; rejected fit %d model %d 3-leg %d through %d "
+          "confidence %d lost %d\n",
           model.name.c_str(), standoff, bearing, yaw,
           res.detections.empty() ? "none" : res.detections[0].model.c_str(),
           res.detections.empty() ? 0 : res.detections[0].legs_used, res.stats.leg_candidates,
-          res.stats.leg_sets, res.stats.model_pairs);
+          res.stats.leg_sets, res.stats.model_pairs, res.stats.rejected.fit,
+          res.stats.rejected.model, res.stats.rejected.three_leg_error,
+          res.stats.rejected.leg_seen_through, res.stats.rejected.low_confidence,
+          res.stats.rejected.lost_legs);
       continue;
     }
     const Detection& d = res.detections[0];

@@ -1,0 +1,168 @@
+#include "perception/shelf_evidence.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/angle.hpp"
+
+namespace shelfdock::perception {
+namespace {
+
+double LegExtent(const geometry::LegModel& leg) {
+  return leg.shape == geometry::LegShape::kCircle ? leg.length_m
+                                                  : std::hypot(leg.length_m, leg.width_m);
+}
+
+// Index of the span holding point `i` (spans are contiguous and ordered).
+int SpanOfPoint(const std::vector<ClusterSpan>& spans, std::size_t i) {
+  const auto it = std::upper_bound(spans.begin(), spans.end(), i,
+                                   [](std::size_t v, const ClusterSpan& s) { return v < s.end; });
+  return it == spans.end() ? -1 : static_cast<int>(it - spans.begin());
+}
+
+struct LegLook {
+  LegView view = LegView::kUnobserved;
+  std::vector<int> occluder_spans;  // clusters in front of the leg
+};
+
+// Looks along the beams toward a leg that no cluster of the hypothesis stands for. Beams within
+// half the leg's narrow side of its bearing must hit it if it is there: a return at its range
+// says it is (just not clustered as a leg, e.g. merged with something touching it), a nearer
+// return hides it (excused), returns well beyond it say the beams passed where it should stand.
+LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
+                  const PreprocessOutput& pre, double alpha, const EvidenceConfig& config) {
+  LegLook look;
+  const double range = leg.norm();
+  if (range < 1e-6) return look;
+  const double bearing = std::atan2(leg.y(), leg.x());
+  // Any return near the leg's silhouette (half a beam wider) can be the leg or its occluder;
+  // only beams well inside it, allowing for the error of the predicted position, prove that
+  // nothing stands there when they pass through.
+  const double half_leg = 0.5 * std::min(model.length_m, model.width_m);
+  const double wide = std::atan2(half_leg, range) + 0.5 * alpha;
+  const double narrow = std::atan2(half_leg - config.leg_position_tolerance_m, range);
+  int present = 0, through = 0;
+  for (std::size_t i = 0; i < pre.points.size(); ++i) {
+    const ScanPoint& q = pre.points[i];
+    const double off = std::abs(geometry::AngleDiff(q.angle, bearing));
+    if (off > wide) continue;
+    if (std::abs(q.range - range) <= config.present_margin_m) {
+      ++present;
+    } else if (q.range < range) {
+      look.occluder_spans.push_back(SpanOfPoint(pre.spans, i));
+    } else if (q.range > range + config.through_margin_m && off <= narrow) {
+      ++through;
+    }
+  }
+  if (present > 0) {
+    look.view = LegView::kPresent;
+  } else if (!look.occluder_spans.empty()) {
+    look.view = LegView::kOccluded;
+  } else if (through >= config.min_through_beams) {
+    look.view = LegView::kSeenThrough;
+  }
+  return look;
+}
+
+// Width of a cluster across the view: its angular span plus one beam, at its range.
+double SeenWidth(const Cluster& c, double alpha) {
+  const double span = std::abs(geometry::AngleDiff(c.points.back().angle, c.points.front().angle));
+  return c.centroid.norm() * (span + alpha);
+}
+
+}  // namespace
+
+double LegSilhouetteWidth(const geometry::LegModel& leg, double leg_yaw,
+                          const Eigen::Vector2d& centre) {
+  if (leg.shape == geometry::LegShape::kCircle) return leg.length_m;
+  const double n = centre.norm();
+  const Eigen::Vector2d across =
+      n > 1e-9 ? Eigen::Vector2d(-centre.y() / n, centre.x() / n) : Eigen::Vector2d::UnitY();
+  const Eigen::Vector2d e1(std::cos(leg_yaw), std::sin(leg_yaw));
+  const Eigen::Vector2d e2(-e1.y(), e1.x());
+  return leg.length_m * std::abs(e1.dot(across)) + leg.width_m * std::abs(e2.dot(across));
+}
+
+ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
+                             const geometry::ShelfModel& model,
+                             const std::array<int, 4>& corner_candidate,
+                             const PreprocessOutput& pre, double angle_increment_rad,
+                             const EvidenceConfig& config) {
+  ShelfEvidence ev;
+  const double alpha = std::abs(angle_increment_rad);
+  const auto corners = model.LegCentres();
+  std::vector<int> own_spans, excused_spans;
+  for (int k = 0; k < 4; ++k) {
+    const int cand = corner_candidate[k];
+    if (cand >= 0) {
+      const Cluster& c = pre.candidates[cand];
+      ev.legs[k] = LegView::kSeen;
+      own_spans.push_back(c.span);
+      // Leg size: a post, a person's leg or a box corner is wider than the model's leg.
+      const double expected = LegSilhouetteWidth(model.leg, T_lidar_shelf.yaw, c.centroid);
+      const double slack = c.centroid.norm() * alpha;  // one beam either way at the edges
+      ev.leg_width_error_m = std::max(
+          ev.leg_width_error_m, std::max(0.0, std::abs(SeenWidth(c, alpha) - expected) - slack));
+      continue;
+    }
+    LegLook look = LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, config);
+    ev.legs[k] = look.view;
+    if (look.view == LegView::kOccluded) {
+      // The object hiding a leg may stand under the shelf (a box in front of a back leg): it
+      // explains the missing leg, so it does not count against the free space either.
+      excused_spans.insert(excused_spans.end(), look.occluder_spans.begin(),
+                           look.occluder_spans.end());
+    }
+  }
+  for (LegView v : ev.legs) {
+    ev.legs_seen += v == LegView::kSeen || v == LegView::kPresent;
+    ev.legs_occluded += v == LegView::kOccluded;
+    ev.legs_seen_through += v == LegView::kSeenThrough;
+  }
+
+  // Free space: at the scan height a shelf's footprint is empty between its legs. A leg-sized
+  // cluster inside is the signature of a phantom made of two neighbours' legs (the legs it
+  // skips stand inside it).
+  const geometry::Pose2 T_shelf_lidar = T_lidar_shelf.inverse();
+  const double hx = 0.5 * model.length_m - config.interior_margin_m;
+  const double hy = 0.5 * model.width_m - config.interior_margin_m;
+  const double reach = 0.5 * model.Diagonal();
+  const double leg_extent = LegExtent(model.leg);
+  auto listed = [](const std::vector<int>& v, int i) {
+    return std::find(v.begin(), v.end(), i) != v.end();
+  };
+  for (std::size_t s = 0; s < pre.spans.size(); ++s) {
+    const ClusterSpan& span = pre.spans[s];
+    if ((span.centroid - T_lidar_shelf.translation()).norm() > reach + span.extent_m) continue;
+    const int si = static_cast<int>(s);
+    if (listed(own_spans, si) || listed(excused_spans, si)) continue;
+    int inside = 0;
+    for (std::size_t i = span.begin; i < span.end; ++i) {
+      const Eigen::Vector2d p = T_shelf_lidar * pre.points[i].p;
+      if (std::abs(p.x()) < hx && std::abs(p.y()) < hy) ++inside;
+    }
+    ev.interior_points += inside;
+    const Eigen::Vector2d c = T_shelf_lidar * span.centroid;
+    if (inside > 0 && span.extent_m <= leg_extent + 0.04 && std::abs(c.x()) < hx &&
+        std::abs(c.y()) < hy) {
+      ++ev.foreign_legs_inside;
+    }
+  }
+  return ev;
+}
+
+double ShelfConfidence(const ShelfEvidence& ev, double err_sum_m, const EvidenceConfig& config) {
+  const int unobserved = 4 - ev.legs_seen - ev.legs_occluded - ev.legs_seen_through;
+  const double support = (ev.legs_seen + config.occluded_credit * ev.legs_occluded +
+                          config.unobserved_credit * unobserved) /
+                         4.0;
+  const double e = err_sum_m / config.fit_scale_m;
+  const double fit = 1.0 / (1.0 + e * e);
+  const double blocked = ev.interior_points + config.foreign_leg_points * ev.foreign_legs_inside;
+  const double free_space = 1.0 / (1.0 + blocked / config.interior_scale_points);
+  const double w = ev.leg_width_error_m / config.leg_width_scale_m;
+  const double size = 1.0 / (1.0 + w * w);
+  return std::clamp(support * fit * free_space * size, 0.0, 1.0);
+}
+
+}  // namespace shelfdock::perception

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/pose2.hpp"
+#include "geometry/shelf_model.hpp"
+#include "perception/detector_config.hpp"
+#include "perception/preprocess.hpp"
+
+namespace shelfdock::perception {
+
+/// What the scan says about one leg of a shelf hypothesis.
+enum class LegView {
+  kSeen,         ///< a leg cluster of the hypothesis
+  kPresent,      ///< no leg cluster, but returns at the leg's range in its direction
+  kOccluded,     ///< something nearer blocks the beams toward it: excused
+  kSeenThrough,  ///< beams pass where the leg should stand: the leg is not there
+  kUnobserved,   ///< no beam says anything (outside the field of view, dropouts)
+};
+
+/// The evidence the scan holds for or against one hypothesis (a shelf pose and model).
+struct ShelfEvidence {
+  std::array<LegView, 4> legs{LegView::kUnobserved, LegView::kUnobserved, LegView::kUnobserved,
+                              LegView::kUnobserved};  ///< per model corner (LegCentres order)
+  int legs_seen = 0;                                  ///< kSeen + kPresent
+  int legs_occluded = 0;                              ///< kOccluded
+  int legs_seen_through = 0;                          ///< kSeenThrough
+  int interior_points = 0;       ///< points inside the footprint shrunk by interior_margin_m,
+                                 ///< not counting the occluders that hide one of its legs
+  int foreign_legs_inside = 0;   ///< leg-sized clusters (not its own) standing inside
+  double leg_width_error_m = 0;  ///< worst |seen width - model leg's silhouette| over its legs
+  double confidence = 0.0;       ///< [0, 1], see ShelfConfidence
+};
+
+/// Gathers the evidence for a shelf at `T_lidar_shelf` of `model` whose model corner k is the
+/// leg candidate `corner_candidate[k]` (index into pre.candidates, -1 when no cluster).
+/// `pre` must come from Preprocess on the same scan (its points are in beam order).
+ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
+                             const geometry::ShelfModel& model,
+                             const std::array<int, 4>& corner_candidate,
+                             const PreprocessOutput& pre, double angle_increment_rad,
+                             const EvidenceConfig& config);
+
+/// Confidence in [0, 1]: the product of
+/// - leg support: (seen + occluded_credit * occluded + unobserved_credit * unobserved) / 4,
+///   a leg seen through counts 0;
+/// - fit: 1 / (1 + (err_sum / fit_scale_m)^2), the Eq. 2 error of the fitted legs;
+/// - free space: 1 / (1 + interior_points / interior_scale_points), 0 with a foreign leg inside;
+/// - leg size: 1 / (1 + (leg_width_error_m / leg_width_scale_m)^2).
+/// It reads as "how sure the scan makes us that this is a shelf of this model here": 1 is four
+/// legs seen at model size with nothing between them.
+double ShelfConfidence(const ShelfEvidence& evidence, double err_sum_m,
+                       const EvidenceConfig& config);
+
+/// Visible width of a leg section (rectangle length x width with its x axis at `leg_yaw`, or a
+/// circle) seen from the sensor at the origin, across the beam toward `centre`.
+double LegSilhouetteWidth(const geometry::LegModel& leg, double leg_yaw,
+                          const Eigen::Vector2d& centre);
+
+}  // namespace shelfdock::perception
