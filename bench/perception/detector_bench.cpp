@@ -1,6 +1,7 @@
 // Speed of Detector::Detect on 811-beam simulated WLR-716 scans (paper's sensor): one shelf in
-// a room, three shelves side by side, and 100 leg-like round posts around one shelf.
-// Targets (issue 2): median < 100 us for one shelf, < 1 ms with 100 posts.
+// a room, three shelves side by side, a row of five, and 100 leg-like round posts around one
+// shelf. Targets (issue 7): medians <= 50 us for one shelf, <= 0.3 ms for a row of five,
+// <= 0.5 ms with 100 posts.
 #include <random>
 
 #include <benchmark/benchmark.h>
@@ -36,6 +37,18 @@ void BM_DetectThreeShelves(benchmark::State& state) {
   RunDetect(state, world);
 }
 
+// Five 1080x856 shelves side by side, 0.3 m apart, seen from 2 m in front of the middle one
+// (no preset: every shelf and every phantom of neighbours' legs is considered).
+void BM_DetectRowOfFive(benchmark::State& state) {
+  sim::World world;
+  testing::AddRoom(world);
+  const auto model = testing::PaperModels()[3];
+  for (int i = -2; i <= 2; ++i) {
+    world.AddShelf(i + 3, model, {2.0 + 0.5 * model.length_m, i * (model.width_m + 0.34), 0.0});
+  }
+  RunDetect(state, world);
+}
+
 void BM_DetectHundredPosts(benchmark::State& state) {
   sim::World world;
   testing::AddRoom(world);
@@ -48,6 +61,7 @@ void BM_DetectHundredPosts(benchmark::State& state) {
 
 BENCHMARK(BM_DetectOneShelfInRoom)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DetectThreeShelves)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DetectRowOfFive)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DetectHundredPosts)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
