@@ -14,6 +14,7 @@ inline constexpr int kExitBadInput = 2;  ///< bad input: file, field or paramete
 void AddDetectCommand(CLI::App& app, int* exit_code);
 void AddBagCommand(CLI::App& app, int* exit_code);
 void AddEvalRealCommand(CLI::App& app, int* exit_code);
+void AddEvalLayoutsCommand(CLI::App& app, int* exit_code);
 void AddSimulateCommand(CLI::App& app, int* exit_code);
 void AddMarkerCommand(CLI::App& app, int* exit_code);
 void AddDockCommands(CLI::App& app, int* exit_code);  ///< dock and eval-docking

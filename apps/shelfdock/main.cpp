@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   shelfdock::app::AddDetectCommand(app, &exit_code);
   shelfdock::app::AddBagCommand(app, &exit_code);
   shelfdock::app::AddEvalRealCommand(app, &exit_code);
+  shelfdock::app::AddEvalLayoutsCommand(app, &exit_code);
   shelfdock::app::AddSimulateCommand(app, &exit_code);
   shelfdock::app::AddMarkerCommand(app, &exit_code);
   shelfdock::app::AddDockCommands(app, &exit_code);

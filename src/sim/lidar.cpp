@@ -257,6 +257,7 @@ LabelledScan Lidar::ScanLabelled(const World& world, const PoseAt& T_world_lidar
     if (echo.centre.hit) {
       truth.kind = echo.centre.kind;
       truth.object_id = echo.centre.object_id;
+      truth.part = echo.centre.part;
     } else if (echo.centre.floor) {
       truth.kind = ObjectKind::kFloor;
     }

@@ -16,6 +16,7 @@ namespace shelfdock::sim {
 struct BeamTruth {
   ObjectKind kind = ObjectKind::kWall;
   int object_id = -1;  ///< shelf id for legs; -1 when nothing was hit
+  int part = 0;        ///< leg index for shelf legs and people's legs (as Primitive::part)
   double true_range_m = std::numeric_limits<double>::quiet_NaN();  ///< [m] centre ray, exact
   bool mixed = false;  ///< the footprint straddled a depth edge
 };

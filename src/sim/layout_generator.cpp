@@ -1,0 +1,111 @@
+#include "sim/layout_generator.hpp"
+
+#include <cassert>
+
+#include "sim/layout_builder.hpp"
+#include "sim/layout_classes.hpp"
+#include "sim/layout_placement.hpp"
+#include "sim/layout_rows.hpp"
+#include "sim/lidar.hpp"
+
+namespace shelfdock::sim {
+
+namespace {
+using layout::SceneRng;
+
+constexpr int kMaxAttempts = 1000;
+
+/// The scene's sensor: a drawn LiDAR with the scene's range noise.
+NamedLidar DrawLidar(LayoutClass layout_class, SceneRng& rng, const LayoutConfig& config) {
+  assert(!config.lidars.empty());
+  NamedLidar lidar = config.lidars[rng.Index(config.lidars.size())];
+  const bool high = layout_class == LayoutClass::kRoundNoisy || rng.Chance(config.high_noise_share);
+  lidar.config.range_noise_sigma_m = high ? config.high_noise_sigma_m : config.noise_sigma_m;
+  return lidar;
+}
+}  // namespace
+
+std::string_view LayoutClassName(LayoutClass layout_class) {
+  switch (layout_class) {
+    case LayoutClass::kOpen:
+      return "open";
+    case LayoutClass::kRow:
+      return "row";
+    case LayoutClass::kAisle:
+      return "aisle";
+    case LayoutClass::kOccludedLeg:
+      return "occluded_leg";
+    case LayoutClass::kPersonBesideLeg:
+      return "person_beside_leg";
+    case LayoutClass::kLargeClose:
+      return "large_close";
+    case LayoutClass::kMixedNeighbours:
+      return "mixed_neighbours";
+    case LayoutClass::kRoundNoisy:
+      return "round_noisy";
+    case LayoutClass::kClutter:
+      return "clutter";
+  }
+  return "unknown";
+}
+
+std::optional<LayoutClass> ParseLayoutClass(std::string_view name) {
+  for (LayoutClass c : kAllLayoutClasses) {
+    if (LayoutClassName(c) == name) return c;
+  }
+  return std::nullopt;
+}
+
+std::optional<geometry::Pose2> LayoutScene::PresetInLidar() const {
+  if (!T_world_preset) return std::nullopt;
+  return T_world_lidar.inverse() * *T_world_preset;
+}
+
+LayoutScene GenerateLayoutScene(LayoutClass layout_class, std::uint64_t seed,
+                                const std::vector<geometry::ShelfModel>& models,
+                                const LayoutConfig& config) {
+  assert(!models.empty());
+  const auto stream = static_cast<std::uint64_t>(layout_class);
+  // A draw that finds no room for the sensor or an occluder starts the scene over on the next
+  // attempt's stream: still a function of (class, seed) alone.
+  for (int attempt = 0; attempt < kMaxAttempts; ++attempt) {
+    SceneRng rng(seed, stream, static_cast<std::uint64_t>(attempt));
+    const NamedLidar lidar = DrawLidar(layout_class, rng, config);
+    layout::SceneBuilder builder;
+    layout::Context context{models, config, lidar.config, rng, builder};
+    const std::optional<layout::Draft> draft = layout::BuildClass(layout_class, context);
+    if (!draft) continue;
+    builder.KeepFree(draft->T_world_lidar.translation(), config.sensor_clearance_m);
+    layout::AddRoom(builder, rng);
+
+    LayoutScene scene;
+    scene.layout_class = layout_class;
+    scene.seed = seed;
+    scene.T_world_lidar = draft->T_world_lidar;
+    scene.target_shelf_id = draft->target_id;
+    scene.occluded_leg = draft->occluded_leg;
+    scene.rows = draft->rows;
+    scene.lidar_name = lidar.name;
+    scene.lidar = lidar.config;
+    scene.scan_seed = rng.Bits();
+    scene.world = builder.world();
+    scene.T_world_preset = draft->T_world_preset;
+    if (const auto target = scene.Target()) {
+      scene.T_world_preset = layout::DrawPreset(rng, *target, config);
+      scene.target_sight =
+          ComputeLegSight(scene.world, scene.T_world_lidar, scene.lidar, target->id);
+      scene.target_legs_in_sight = scene.target_sight.LegsInSight(config.min_beams_in_sight);
+      scene.target_standoff_m = layout::Standoff(*target, scene.T_world_lidar.translation());
+    }
+    return scene;
+  }
+  assert(false && "no layout scene could be built: the config's ranges leave no room");
+  return {};
+}
+
+geometry::LaserScan SimulateLayoutScan(const LayoutScene& scene) {
+  Lidar lidar(scene.lidar, scene.scan_seed);
+  return lidar.Scan(scene.world, scene.T_world_lidar);
+}
+
+}  // namespace shelfdock::sim
