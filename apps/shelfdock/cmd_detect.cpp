@@ -30,6 +30,7 @@ struct DetectOptions {
   std::string preset;
   std::string extrinsic;
   std::string robot_pose;
+  bool explain = false;
 };
 
 // Parses "X,Y,YAW" (metres, metres, radians); `flag` names the option in errors.
@@ -111,6 +112,25 @@ nlohmann::json StatsJson(const perception::DetectionStats& s) {
             {"lost_legs", s.rejected.lost_legs}}}};
 }
 
+nlohmann::json HypothesisJson(const perception::HypothesisRecord& h) {
+  nlohmann::json legs = nlohmann::json::array();
+  for (const auto& l : h.legs) legs.push_back({l.x(), l.y()});
+  return {{"model", h.model},
+          {"verdict", perception::VerdictName(h.verdict)},
+          {"x", h.T_lidar_shelf.x},
+          {"y", h.T_lidar_shelf.y},
+          {"yaw", h.T_lidar_shelf.yaw},
+          {"legs", legs},
+          {"err_sum", h.err_sum},
+          {"confidence", h.confidence},
+          {"legs_visible", h.legs_visible},
+          {"legs_occluded", h.legs_occluded},
+          {"legs_seen_through", h.legs_seen_through},
+          {"interior_points", h.interior_points},
+          {"foreign_legs_inside", h.foreign_legs_inside},
+          {"leg_width_error", h.leg_width_error_m}};
+}
+
 int RunDetect(const DetectOptions& opt) {
   // Parse everything before detecting anything: bad input never yields partial output.
   const auto preset = ParsePose(opt.preset, "--preset");
@@ -123,12 +143,17 @@ int RunDetect(const DetectOptions& opt) {
   const perception::Detector detector(std::move(models), config);
 
   for (const auto& scan : scans) {
-    const perception::DetectionResult result = detector.Detect(scan, preset);
+    const perception::DetectionResult result = detector.Detect(scan, preset, opt.explain);
     nlohmann::json dets = nlohmann::json::array();
     for (const auto& d : result.detections)
       dets.push_back(DetectionJson(d, T_base_lidar, T_map_base));
-    std::cout << nlohmann::json{{"detections", dets}, {"stats", StatsJson(result.stats)}}.dump()
-              << "\n";
+    nlohmann::json out{{"detections", dets}, {"stats", StatsJson(result.stats)}};
+    if (opt.explain) {
+      nlohmann::json hyps = nlohmann::json::array();
+      for (const auto& h : result.hypotheses) hyps.push_back(HypothesisJson(h));
+      out["hypotheses"] = hyps;
+    }
+    std::cout << out.dump() << "\n";
   }
   return kExitOk;
 }
@@ -147,6 +172,8 @@ void AddDetectCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--params", opt->params, "detector parameters YAML (e.g. config/detector.yaml)");
   cmd->add_option("--extrinsic", opt->extrinsic, "T_base_lidar as X,Y,YAW: also report base poses");
   cmd->add_option("--robot-pose", opt->robot_pose, "T_map_base as X,Y,YAW: also report map poses");
+  cmd->add_flag("--explain", opt->explain,
+                "also print every hypothesis (leg set and model) with its evidence and verdict");
   cmd->callback([opt, exit_code] { *exit_code = RunDetect(*opt); });
 }
 

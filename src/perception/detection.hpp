@@ -54,9 +54,40 @@ struct DetectionStats {
   RejectionCounts rejected;  ///< why hypotheses were not returned
 };
 
+/// What became of one hypothesis (a leg set paired with a model).
+enum class Verdict {
+  kReturned,        ///< returned as a detection
+  kFit,             ///< RejectionCounts::fit
+  kModel,           ///< RejectionCounts::model
+  kThreeLegError,   ///< RejectionCounts::three_leg_error
+  kLegSeenThrough,  ///< RejectionCounts::leg_seen_through
+  kLowConfidence,   ///< RejectionCounts::low_confidence
+  kLostLegs,        ///< RejectionCounts::lost_legs
+};
+const char* VerdictName(Verdict verdict);
+
+/// One hypothesis as the detector saw it, for explaining a scan ("why was my shelf not found").
+struct HypothesisRecord {
+  std::string model;
+  geometry::Pose2 T_lidar_shelf;      ///< the 3.4 fit (heading not yet resolved)
+  std::vector<Eigen::Vector2d> legs;  ///< fitted leg centres [m]
+  double err_sum = 0.0;               ///< [m] Eq. 2 on the fitted legs (0 when the fit failed)
+  double confidence = 0.0;            ///< 0 when rejected before the evidence was weighed
+  int legs_visible = 0;
+  int legs_occluded = 0;
+  int legs_seen_through = 0;
+  int interior_points = 0;
+  int foreign_legs_inside = 0;
+  double leg_width_error_m = 0.0;
+  Verdict verdict = Verdict::kFit;
+};
+
 struct DetectionResult {
   std::vector<Detection> detections;  ///< best first; with a preset, nearest to it first
   DetectionStats stats;
+  /// Every hypothesis with its evidence and verdict; filled only when asked for
+  /// (Detector::Detect with explain = true).
+  std::vector<HypothesisRecord> hypotheses;
 };
 
 }  // namespace shelfdock::perception

@@ -19,8 +19,10 @@ namespace {
 
 // One points-model pair, fitted and scored: a shelf hypothesis.
 struct Hypothesis {
-  Detection detection;
+  Detection detection;                          // filled when it passed every check
+  HypothesisRecord record;                      // what was found out about it
   std::array<int, 4> clusters{-1, -1, -1, -1};  // leg candidates it is made of
+  const geometry::ShelfModel* model = nullptr;
 };
 
 // Leg fits depend only on the cluster and the leg section, so they are shared between the
@@ -56,53 +58,94 @@ struct ScoreInputs {
   const DetectorConfig& config;
 };
 
-std::optional<Hypothesis> Score(const LegSet& set, const geometry::ShelfModel& model,
-                                int model_index, double hint, const ScoreInputs& in,
-                                LegFitCache& cache, RejectionCounts& rejected) {
+void Count(Verdict verdict, RejectionCounts& rejected) {
+  switch (verdict) {
+    case Verdict::kFit:
+      ++rejected.fit;
+      break;
+    case Verdict::kModel:
+      ++rejected.model;
+      break;
+    case Verdict::kThreeLegError:
+      ++rejected.three_leg_error;
+      break;
+    case Verdict::kLegSeenThrough:
+      ++rejected.leg_seen_through;
+      break;
+    case Verdict::kLowConfidence:
+      ++rejected.low_confidence;
+      break;
+    case Verdict::kLostLegs:
+      ++rejected.lost_legs;
+      break;
+    case Verdict::kReturned:
+      break;
+  }
+}
+
+// Fits one points-model pair (3.3 leg centres, 3.4 shelf pose), screens it and weighs the
+// scan's evidence. The record's verdict says whether it stays in the competition for legs
+// (kReturned for now) or why not.
+Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model_index, double hint,
+                 const ScoreInputs& in, LegFitCache& cache) {
   const DetectorConfig& config = in.config;
+  Hypothesis h;
+  h.clusters = set.legs;
+  h.model = &model;
+  HypothesisRecord& rec = h.record;
+  rec.model = model.name;
   std::array<Eigen::Vector2d, 4> legs{};
   for (int i = 0; i < set.count; ++i) {
     legs[i] = cache.Get(set.legs[i], model, hint, in.pre.candidates, config.leg_fit).centre;
   }
+  rec.legs.assign(legs.begin(), legs.begin() + set.count);
   const auto fit = FitShelf(legs, set.count, model, config.shelf_fit);
   if (!fit || !fit->converged || fit->rms_m > config.shelf_fit.max_rms_m) {
-    ++rejected.fit;
-    return std::nullopt;
+    rec.verdict = Verdict::kFit;
+    return h;
   }
+  rec.T_lidar_shelf = fit->T_lidar_shelf;
   // Eq. 2 again on the fitted (unbiased) leg centres: this is what tells close models apart.
   const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, model_index);
+  rec.err_sum = refined.err_sum;
   if (!PassesThresholds(refined, config.model_match)) {
-    ++rejected.model;
-    return std::nullopt;
+    rec.verdict = Verdict::kModel;
+    return h;
   }
   // Two edges constrain a shelf less than four: a 3-leg set must match more tightly.
   if (set.count == 3 && refined.err_sum > config.model_match.three_leg_err_sum_m) {
-    ++rejected.three_leg_error;
-    return std::nullopt;
+    rec.verdict = Verdict::kThreeLegError;
+    return h;
   }
   std::array<int, 4> corner_candidate{-1, -1, -1, -1};
   for (int i = 0; i < set.count; ++i) corner_candidate[fit->corner_of_leg[i]] = set.legs[i];
   ShelfEvidence ev = GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre,
                                     in.angle_increment_rad, config.evidence);
+  ev.confidence = ShelfConfidence(ev, refined.err_sum, config.evidence);
+  rec.confidence = ev.confidence;
+  rec.legs_visible = ev.legs_seen;
+  rec.legs_occluded = ev.legs_occluded;
+  rec.legs_seen_through = ev.legs_seen_through;
+  rec.interior_points = ev.interior_points;
+  rec.foreign_legs_inside = ev.foreign_legs_inside;
+  rec.leg_width_error_m = ev.leg_width_error_m;
   // A leg that beams pass straight through is not there: whatever made the other legs, it is
   // not this shelf (clutter forming a right triangle, or legs of two shelves).
   if (ev.legs_seen_through > 0) {
-    ++rejected.leg_seen_through;
-    return std::nullopt;
+    rec.verdict = Verdict::kLegSeenThrough;
+    return h;
   }
-  ev.confidence = ShelfConfidence(ev, refined.err_sum, config.evidence);
   if (ev.confidence < config.evidence.min_confidence) {
-    ++rejected.low_confidence;
-    return std::nullopt;
+    rec.verdict = Verdict::kLowConfidence;
+    return h;
   }
-  Hypothesis h;
-  h.clusters = set.legs;
+  rec.verdict = Verdict::kReturned;
   Detection& d = h.detection;
   d.model = model.name;
   d.T_lidar_shelf = fit->T_lidar_shelf;
   d.length_m = fit->length_m;
   d.width_m = fit->width_m;
-  d.legs.assign(legs.begin(), legs.begin() + set.count);
+  d.legs = rec.legs;
   d.legs_used = set.count;
   d.err_sum = refined.err_sum;
   d.cost = fit->cost;
@@ -120,6 +163,26 @@ std::optional<Hypothesis> Score(const LegSet& set, const geometry::ShelfModel& m
 
 }  // namespace
 
+const char* VerdictName(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::kReturned:
+      return "returned";
+    case Verdict::kFit:
+      return "fit";
+    case Verdict::kModel:
+      return "model";
+    case Verdict::kThreeLegError:
+      return "three_leg_error";
+    case Verdict::kLegSeenThrough:
+      return "leg_seen_through";
+    case Verdict::kLowConfidence:
+      return "low_confidence";
+    case Verdict::kLostLegs:
+      return "lost_legs";
+  }
+  return "unknown";
+}
+
 double ResolveHeading(double yaw_rad, double reference_rad, bool square) {
   const double step = square ? 0.5 * std::numbers::pi : std::numbers::pi;
   const double k = std::round(geometry::AngleDiff(reference_rad, yaw_rad) / step);
@@ -135,13 +198,15 @@ Detector::Detector(std::vector<geometry::ShelfModel> models, DetectorConfig conf
 }
 
 DetectionResult Detector::Detect(const geometry::LaserScan& scan,
-                                 const std::optional<geometry::Pose2>& T_lidar_preset) const {
-  return DetectPoints(ScanToPoints(scan), scan.angle_increment, T_lidar_preset);
+                                 const std::optional<geometry::Pose2>& T_lidar_preset,
+                                 bool explain) const {
+  return DetectPoints(ScanToPoints(scan), scan.angle_increment, T_lidar_preset, explain);
 }
 
 DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
                                        double angle_increment_rad,
-                                       const std::optional<geometry::Pose2>& T_lidar_preset) const {
+                                       const std::optional<geometry::Pose2>& T_lidar_preset,
+                                       bool explain) const {
   DetectionResult result;
   DetectionStats& stats = result.stats;
   stats.valid_points = static_cast<int>(points.size());
@@ -176,8 +241,13 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     const double hint = std::atan2(long_edge.y(), long_edge.x());
     for (const ModelPair& pair : pairs) {
       ++stats.hypotheses;
-      auto h = Score(set, models_[pair.model], pair.model, hint, inputs, cache, stats.rejected);
-      if (h) hypotheses.push_back(std::move(*h));
+      Hypothesis h = Score(set, models_[pair.model], pair.model, hint, inputs, cache);
+      if (h.record.verdict == Verdict::kReturned) {
+        hypotheses.push_back(std::move(h));
+        continue;
+      }
+      Count(h.record.verdict, stats.rejected);
+      if (explain) result.hypotheses.push_back(std::move(h.record));
     }
   }
 
@@ -191,9 +261,17 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     weights.push_back(4.0 * h.detection.confidence);
   }
   const std::vector<int> picked = SelectDisjoint(legs, weights);
-  stats.rejected.lost_legs += static_cast<int>(hypotheses.size() - picked.size());
   std::vector<Detection> kept;
-  for (int i : picked) kept.push_back(std::move(hypotheses[i].detection));
+  for (std::size_t i = 0; i < hypotheses.size(); ++i) {
+    Hypothesis& h = hypotheses[i];
+    const bool won = std::find(picked.begin(), picked.end(), static_cast<int>(i)) != picked.end();
+    if (!won) {
+      h.record.verdict = Verdict::kLostLegs;
+      Count(h.record.verdict, stats.rejected);
+    }
+    if (explain) result.hypotheses.push_back(h.record);
+    if (won) kept.push_back(std::move(h.detection));
+  }
   // Ranking: with a preset, nearest to it first (paper 3.2); otherwise the most confident.
   std::stable_sort(kept.begin(), kept.end(), [&](const Detection& a, const Detection& b) {
     if (T_lidar_preset) {

@@ -28,14 +28,17 @@ class Detector {
   /// message names the key, e.g. `preprocess.cluster_gap_m`).
   explicit Detector(std::vector<geometry::ShelfModel> models, DetectorConfig config = {});
 
+  /// `explain`: also return every hypothesis with its evidence and verdict.
   DetectionResult Detect(const geometry::LaserScan& scan,
-                         const std::optional<geometry::Pose2>& T_lidar_preset = std::nullopt) const;
+                         const std::optional<geometry::Pose2>& T_lidar_preset = std::nullopt,
+                         bool explain = false) const;
 
   /// As Detect, for points already in the lidar frame (e.g. motion-compensated by the docking
   /// layer), in beam order; `angle_increment_rad` sets the range-adaptive thresholds.
   DetectionResult DetectPoints(const std::vector<ScanPoint>& points_in_beam_order,
                                double angle_increment_rad,
-                               const std::optional<geometry::Pose2>& T_lidar_preset) const;
+                               const std::optional<geometry::Pose2>& T_lidar_preset,
+                               bool explain = false) const;
 
   const std::vector<geometry::ShelfModel>& models() const { return models_; }
   const DetectorConfig& config() const { return config_; }

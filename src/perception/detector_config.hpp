@@ -71,7 +71,12 @@ struct EvidenceConfig {
   double fit_scale_m = 0.03;           ///< [m] err_sum that halves the confidence
   double interior_scale_points = 4.0;  ///< [-] points inside the footprint that halve it
   double foreign_leg_points = 6.0;     ///< [-] a leg-sized cluster inside counts as this many
-  double leg_width_scale_m = 0.03;     ///< [m] leg width error (beyond one beam) that halves it
+  double object_point_weight = 0.25;   ///< [-] weight of an interior point of a larger object
+  double leg_size_margin_m = 0.04;     ///< [m] clusters up to the leg's extent plus this are
+                                       ///< leg-sized
+  double leg_width_slack_m = 0.015;    ///< [m] seen leg widths may differ by one beam plus this
+                                       ///< (the beam footprint blurs a leg's edges)
+  double leg_width_scale_m = 0.01;     ///< [m] leg width error beyond the slack that halves it
   double min_confidence = 0.3;         ///< [-] below this a hypothesis is not returned
 };
 

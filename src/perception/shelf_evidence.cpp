@@ -42,6 +42,10 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
   const double wide = std::atan2(half_leg, range) + 0.5 * alpha;
   const double narrow = std::atan2(half_leg - config.leg_position_tolerance_m, range);
   int present = 0, through = 0;
+  // Beams that fall well inside the silhouette: when the leg is far or thin there may be only
+  // one, and then one beam through it is all the evidence the scan can give.
+  const int narrow_beams = static_cast<int>(std::floor(2.0 * narrow / alpha)) + 1;
+  const int needed = std::max(1, std::min(config.min_through_beams, narrow_beams));
   for (std::size_t i = 0; i < pre.points.size(); ++i) {
     const ScanPoint& q = pre.points[i];
     const double off = std::abs(geometry::AngleDiff(q.angle, bearing));
@@ -58,7 +62,7 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
     look.view = LegView::kPresent;
   } else if (!look.occluder_spans.empty()) {
     look.view = LegView::kOccluded;
-  } else if (through >= config.min_through_beams) {
+  } else if (narrow > 0.0 && through >= needed) {
     look.view = LegView::kSeenThrough;
   }
   return look;
@@ -100,7 +104,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       own_spans.push_back(c.span);
       // Leg size: a post, a person's leg or a box corner is wider than the model's leg.
       const double expected = LegSilhouetteWidth(model.leg, T_lidar_shelf.yaw, c.centroid);
-      const double slack = c.centroid.norm() * alpha;  // one beam either way at the edges
+      // One beam either way at the edges, plus the blur of the beam's footprint.
+      const double slack = c.centroid.norm() * alpha + config.leg_width_slack_m;
       ev.leg_width_error_m = std::max(
           ev.leg_width_error_m, std::max(0.0, std::abs(SeenWidth(c, alpha) - expected) - slack));
       continue;
@@ -122,7 +127,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
 
   // Free space: at the scan height a shelf's footprint is empty between its legs. A leg-sized
   // cluster inside is the signature of a phantom made of two neighbours' legs (the legs it
-  // skips stand inside it).
+  // skips stand inside it) or of posts in clutter; larger objects (a person's legs, a box) may
+  // well stand under a real shelf and weigh less.
   const geometry::Pose2 T_shelf_lidar = T_lidar_shelf.inverse();
   const double hx = 0.5 * model.length_m - config.interior_margin_m;
   const double hy = 0.5 * model.width_m - config.interior_margin_m;
@@ -142,11 +148,10 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       if (std::abs(p.x()) < hx && std::abs(p.y()) < hy) ++inside;
     }
     ev.interior_points += inside;
+    if (inside == 0 || span.extent_m > leg_extent + config.leg_size_margin_m) continue;
+    ev.interior_leg_points += inside;
     const Eigen::Vector2d c = T_shelf_lidar * span.centroid;
-    if (inside > 0 && span.extent_m <= leg_extent + 0.04 && std::abs(c.x()) < hx &&
-        std::abs(c.y()) < hy) {
-      ++ev.foreign_legs_inside;
-    }
+    if (std::abs(c.x()) < hx && std::abs(c.y()) < hy) ++ev.foreign_legs_inside;
   }
   return ev;
 }
@@ -158,7 +163,10 @@ double ShelfConfidence(const ShelfEvidence& ev, double err_sum_m, const Evidence
                          4.0;
   const double e = err_sum_m / config.fit_scale_m;
   const double fit = 1.0 / (1.0 + e * e);
-  const double blocked = ev.interior_points + config.foreign_leg_points * ev.foreign_legs_inside;
+  const double blocked =
+      ev.interior_leg_points +
+      config.object_point_weight * (ev.interior_points - ev.interior_leg_points) +
+      config.foreign_leg_points * ev.foreign_legs_inside;
   const double free_space = 1.0 / (1.0 + blocked / config.interior_scale_points);
   const double w = ev.leg_width_error_m / config.leg_width_scale_m;
   const double size = 1.0 / (1.0 + w * w);

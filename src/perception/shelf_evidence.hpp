@@ -30,6 +30,7 @@ struct ShelfEvidence {
   int legs_seen_through = 0;                          ///< kSeenThrough
   int interior_points = 0;       ///< points inside the footprint shrunk by interior_margin_m,
                                  ///< not counting the occluders that hide one of its legs
+  int interior_leg_points = 0;   ///< of interior_points, those in leg-sized clusters
   int foreign_legs_inside = 0;   ///< leg-sized clusters (not its own) standing inside
   double leg_width_error_m = 0;  ///< worst |seen width - model leg's silhouette| over its legs
   double confidence = 0.0;       ///< [0, 1], see ShelfConfidence
@@ -48,7 +49,9 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
 /// - leg support: (seen + occluded_credit * occluded + unobserved_credit * unobserved) / 4,
 ///   a leg seen through counts 0;
 /// - fit: 1 / (1 + (err_sum / fit_scale_m)^2), the Eq. 2 error of the fitted legs;
-/// - free space: 1 / (1 + interior_points / interior_scale_points), 0 with a foreign leg inside;
+/// - free space: 1 / (1 + blocked / interior_scale_points), where blocked counts each interior
+///   point of a leg-sized cluster once, each other interior point object_point_weight times,
+///   and each leg-sized cluster standing inside foreign_leg_points more;
 /// - leg size: 1 / (1 + (leg_width_error_m / leg_width_scale_m)^2).
 /// It reads as "how sure the scan makes us that this is a shelf of this model here": 1 is four
 /// legs seen at model size with nothing between them.
