@@ -39,6 +39,8 @@ void ReadModelMatch(YamlFields f, perception::ModelMatchConfig& c) {
 void ReadLegFit(YamlFields f, perception::LegFitConfig& c) {
   f.Read("loss_scale_m", c.loss_scale_m);
   f.Read("prior_weight", c.prior_weight);
+  f.Read("range_sigma_m", c.range_sigma_m);
+  f.Read("silhouette_sigma_beams", c.silhouette_sigma_beams);
   f.Read("pca_min_points", c.pca_min_points);
   f.Read("pca_min_anisotropy", c.pca_min_anisotropy);
   f.Read("max_iterations", c.max_iterations);
@@ -48,6 +50,8 @@ void ReadLegFit(YamlFields f, perception::LegFitConfig& c) {
 void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
   f.Read("loss_scale_m", c.loss_scale_m);
   f.Read("max_iterations", c.max_iterations);
+  f.Read("leg_radial_sigma_m", c.leg_radial_sigma_m);
+  f.Read("leg_bearing_sigma_rad", c.leg_bearing_sigma_rad);
   f.Read("min_leg_sigma_m", c.min_leg_sigma_m);
   f.Read("max_rms_m", c.max_rms_m);
   f.RejectUnknown();

@@ -50,6 +50,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   const auto& l = c.leg_fit;
   k.Check(l.loss_scale_m > 0.0, "leg_fit.loss_scale_m", "> 0");
   k.Check(l.prior_weight >= 0.0, "leg_fit.prior_weight", ">= 0");
+  k.Check(l.range_sigma_m > 0.0, "leg_fit.range_sigma_m", "> 0");
+  k.Check(l.silhouette_sigma_beams > 0.0, "leg_fit.silhouette_sigma_beams", "> 0");
   k.Check(l.pca_min_points >= 2, "leg_fit.pca_min_points", ">= 2");
   k.Check(l.pca_min_anisotropy >= 1.0, "leg_fit.pca_min_anisotropy", ">= 1");
   k.Check(l.max_iterations >= 1, "leg_fit.max_iterations", ">= 1");
@@ -57,6 +59,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   const auto& f = c.shelf_fit;
   k.Check(f.loss_scale_m > 0.0, "shelf_fit.loss_scale_m", "> 0");
   k.Check(f.max_iterations >= 1, "shelf_fit.max_iterations", ">= 1");
+  k.Check(f.leg_radial_sigma_m > 0.0, "shelf_fit.leg_radial_sigma_m", "> 0");
+  k.Check(f.leg_bearing_sigma_rad > 0.0, "shelf_fit.leg_bearing_sigma_rad", "> 0");
   k.Check(f.min_leg_sigma_m > 0.0, "shelf_fit.min_leg_sigma_m", "> 0");
   k.Check(f.max_rms_m > 0.0, "shelf_fit.max_rms_m", "> 0");
 

@@ -41,20 +41,27 @@ struct ModelMatchConfig {
 
 /// Paper 3.3: leg centres by PCA and nonlinear least squares.
 struct LegFitConfig {
-  double loss_scale_m = 0.015;     ///< [m] Huber scale of the point residuals
-  double prior_weight = 0.1;       ///< [-] weak pull to the bias-corrected centroid (keeps a
-                                   ///< single visible face well posed along the face)
-  int pca_min_points = 6;          ///< [-] fewer points: leg axes from the shelf edge
-  double pca_min_anisotropy = 20;  ///< [-] eigenvalue ratio for a PCA direction to be trusted
-  int max_iterations = 20;         ///< [-] solver iterations
+  double loss_scale_m = 0.015;          ///< [m] Huber scale of the point residuals
+  double prior_weight = 0.1;            ///< [-] weak pull to the bias-corrected centroid (keeps a
+                                        ///< single visible face well posed along the face)
+  double range_sigma_m = 0.01;          ///< [m] LiDAR range noise (1 sigma): weighs the ranges
+                                        ///< against the silhouette's bearing
+  double silhouette_sigma_beams = 0.3;  ///< [beams] std of the bearing of the silhouette's
+                                        ///< centre (both edges known to a beam: 0.2, plus margin)
+  int pca_min_points = 6;               ///< [-] fewer points: leg axes from the shelf edge
+  double pca_min_anisotropy = 20;       ///< [-] eigenvalue ratio for a PCA direction to be trusted
+  int max_iterations = 20;              ///< [-] solver iterations
 };
 
 /// Paper 3.4: shelf centre and heading by nonlinear least squares (Eq. 8-11).
 struct ShelfFitConfig {
-  double loss_scale_m = 0.02;      ///< [m] Cauchy scale of the leg residuals
-  int max_iterations = 25;         ///< [-] solver iterations
-  double min_leg_sigma_m = 0.003;  ///< [m] floor of the per-leg std used for the covariance
-  double max_rms_m = 0.03;         ///< [m] fitted legs farther (RMS) from the model: rejected
+  double loss_scale_m = 0.02;             ///< [m] Cauchy scale of the leg residuals
+  int max_iterations = 25;                ///< [-] solver iterations
+  double leg_radial_sigma_m = 0.004;      ///< [m] std of a fitted leg centre along its beam at
+                                          ///< 1 m; grows as sqrt(range) (fewer beams on the leg)
+  double leg_bearing_sigma_rad = 0.0015;  ///< [rad] its std across the beam, as a bearing
+  double min_leg_sigma_m = 0.003;         ///< [m] floor of the per-leg std used for the covariance
+  double max_rms_m = 0.03;                ///< [m] legs farther (RMS) from the model: rejected
 };
 
 /// What the scan says about each hypothesis (legs seen, hidden or seen through; free space

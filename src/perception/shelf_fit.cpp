@@ -20,10 +20,18 @@ namespace {
 // distance (the maximum-likelihood choice for isotropic Gaussian leg errors), made robust to a
 // wrong leg by Cauchy weights applied as iteratively reweighted least squares (the residuals
 // are scaled by sqrt(w_i)). Unused legs (3-leg sets) have zero weight.
+// Each residual is split along and across the leg's beam and divided by its std there (a
+// deviation from the paper's equal weights): a fitted leg centre is known to a fraction of a
+// beam step across the beam (its silhouette) but only to range noise / sqrt(beams on the leg)
+// along it, so equal weights let the range noise of the far legs into the heading.
 struct CornerCost {
   std::array<Eigen::Vector2d, 4> legs;
   std::array<Eigen::Vector2d, 4> corners;  // shelf frame
   std::array<double, 4> sqrt_w{0.0, 0.0, 0.0, 0.0};
+  // Rows: (along, across the leg's beam) / their std.
+  std::array<Eigen::Matrix2d, 4> info_sqrt{Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity(),
+                                           Eigen::Matrix2d::Identity(),
+                                           Eigen::Matrix2d::Identity()};
   template <typename T>
   bool operator()(const T* x, T* residual) const {
     using std::cos;
@@ -32,8 +40,11 @@ struct CornerCost {
     const T s = sin(x[2]);
     for (int i = 0; i < 4; ++i) {
       const Eigen::Vector2d& k = corners[i];
-      residual[2 * i] = T(sqrt_w[i]) * (T(legs[i].x()) - (x[0] + c * T(k.x()) - s * T(k.y())));
-      residual[2 * i + 1] = T(sqrt_w[i]) * (T(legs[i].y()) - (x[1] + s * T(k.x()) + c * T(k.y())));
+      const T ex = T(legs[i].x()) - (x[0] + c * T(k.x()) - s * T(k.y()));
+      const T ey = T(legs[i].y()) - (x[1] + s * T(k.x()) + c * T(k.y()));
+      const Eigen::Matrix2d& A = info_sqrt[i];
+      residual[2 * i] = T(sqrt_w[i]) * (T(A(0, 0)) * ex + T(A(0, 1)) * ey);
+      residual[2 * i + 1] = T(sqrt_w[i]) * (T(A(1, 0)) * ex + T(A(1, 1)) * ey);
     }
     return true;
   }
@@ -75,6 +86,17 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
     cost.legs[i] = legs[i];
     cost.corners[i] = corners[corner_of[i]];
     cost.sqrt_w[i] = 1.0;
+    // The std along the beam grows as sqrt(range) (beams on a leg fall as 1 / range), across it
+    // as range (a bearing); scaled so that a leg at 1 m weighs 1 along its beam, which keeps
+    // the Cauchy scale in metres.
+    const double norm = legs[i].norm();
+    const double range = std::max(norm, 0.1);
+    const Eigen::Vector2d along =
+        norm > 1e-9 ? Eigen::Vector2d(legs[i] / norm) : Eigen::Vector2d::UnitX();
+    const double w_along = 1.0 / std::sqrt(range);
+    const double w_across = config.leg_radial_sigma_m / (config.leg_bearing_sigma_rad * range);
+    cost.info_sqrt[i] << w_along * along.x(), w_along * along.y(), -w_across * along.y(),
+        w_across * along.x();
   }
   // Ceres' TinySolver: dense LM on 3 parameters and 8 residuals, no heap allocation; the
   // heading is wrapped to [-pi, pi) after the solve (the cost is 2 pi periodic).

@@ -27,10 +27,11 @@ struct ShelfFitResult {
 /// order as in LegSet; legs[3] unused when count == 3). Each leg is paired with the model corner
 /// u = C (+-L/2, +-W/2) of Eq. 8-9 nearest to it under the initial pose (the legs' mean, or the
 /// hypotenuse midpoint for 3 legs, and the direction of a long edge), then Ceres' TinySolver
-/// minimises sum rho(|leg - u|^2) with a Cauchy loss applied as IRLS weights (3 rounds); the
-/// heading is wrapped to [-pi, pi) afterwards. The covariance is (J^T J)^-1 of the unweighted
-/// final Jacobian scaled by the residual variance (floored by min_leg_sigma_m).
-/// nullopt when the legs cannot be paired one-to-one with corners.
+/// minimises sum rho(|W_i (leg - u)|^2) with a Cauchy loss applied as IRLS weights (3 rounds);
+/// W_i weighs the error along and across leg i's beam by its std there (leg_radial_sigma_m,
+/// leg_bearing_sigma_rad). The heading is wrapped to [-pi, pi) afterwards. The covariance is (J^T
+/// J)^-1 of the unweighted final Jacobian scaled by the residual variance (floored by
+/// min_leg_sigma_m). nullopt when the legs cannot be paired one-to-one with corners.
 std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& legs, int count,
                                        const geometry::ShelfModel& model,
                                        const ShelfFitConfig& config);

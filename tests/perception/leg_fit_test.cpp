@@ -2,9 +2,11 @@
 #include "perception/leg_fit.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "test_scenes.hpp"
 
@@ -32,7 +34,10 @@ TEST(LegFitTest, PcaFindsTheMainDirectionOfAFace) {
 // Exact points: the fit recovers the centre, the bare centroid is biased toward the sensor by
 // about pi/4 r (circle) or half the depth (box).
 TEST(LegFitTest, ExactPointsGiveTheCentreAndRemoveTheCentroidBias) {
-  const LegFitConfig config;
+  // Exact ranges: the silhouette's centre bearing (only known to within a beam step) must not
+  // outweigh them.
+  LegFitConfig config;
+  config.range_sigma_m = 1e-6;
   const Eigen::Vector2d c(1.2, 0.4);
   const auto circle = testing::CastCircle(c, 0.013, kAlpha);
   ASSERT_GE(circle.size(), 3u);
@@ -76,6 +81,50 @@ TEST(LegFitTest, NoisyRangesGiveNoBiasAlongTheBeam) {
       sum_radial += (FitLeg(pts, leg, 0.0, config).centre - c).dot(view);
     }
     EXPECT_LT(std::abs(sum_radial / kDraws), 1.5e-3);
+  }
+}
+
+// 10 mm range noise, 1 m away, the beams at a random phase to the leg: the centre across the
+// beam comes from the silhouette (the bearings of the outer beams), not from the noisy ranges.
+// Its RMS error stays within 0.35 beam steps (quantisation of both edges alone: 0.2 steps); with
+// the silhouette term off, range noise leaks across the beam (round 0.7 steps, box 0.4).
+TEST(LegFitTest, NoisyRangesLeaveTheCentreOnTheSilhouetteBisector) {
+  std::mt19937_64 rng(2);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  std::uniform_real_distribution<double> phase(0.0, kAlpha);
+  for (const auto& leg : {Round26(), Square40()}) {
+    for (const double sigma_beams : {0.3, 1e6}) {
+      LegFitConfig config;
+      config.silhouette_sigma_beams = sigma_beams;
+      double sum_sq = 0.0;
+      constexpr int kDraws = 300;
+      for (int k = 0; k < kDraws; ++k) {
+        const double bearing = 0.2 + phase(rng);
+        const Eigen::Vector2d c(std::cos(bearing), std::sin(bearing));
+        auto pts = leg.shape == geometry::LegShape::kCircle
+                       ? testing::CastCircle(c, leg.Radius(), kAlpha)
+                       : testing::CastBox(geometry::Pose2(c.x(), c.y(), 0.5), 0.04, 0.04, kAlpha);
+        // The helpers start at the left tangent; beams of a real scan fall at any phase.
+        const double shift = phase(rng);
+        for (auto& q : pts) {
+          q.angle -= shift;
+          q.range += noise(rng);
+          q.p = q.range * Eigen::Vector2d(std::cos(q.angle), std::sin(q.angle));
+        }
+        const Eigen::Vector2d truth =
+            Eigen::Rotation2Dd(-shift) * c;  // the leg rotated with the beams
+        const Eigen::Vector2d e = FitLeg(pts, leg, 0.5, config).centre - truth;
+        const double across = truth.x() * e.y() - truth.y() * e.x();
+        sum_sq += across * across;
+      }
+      const double rms_steps = std::sqrt(sum_sq / kDraws) / kAlpha;
+      std::printf("[ leg fit ] %s silhouette sigma %g beams: RMS across the beam %.2f steps\n",
+                  leg.shape == geometry::LegShape::kCircle ? "round" : "box", sigma_beams,
+                  rms_steps);
+      if (sigma_beams < 1.0) {
+        EXPECT_LT(rms_steps, 0.35);
+      }
+    }
   }
 }
 
