@@ -53,6 +53,7 @@ struct LegFitCache {
 // scan's evidence. nullopt (with the reason counted) when it is not a shelf of this model.
 struct ScoreInputs {
   const PreprocessOutput& pre;
+  const std::vector<char>& shelf_like_spans;
   double angle_increment_rad;
   const std::optional<geometry::Pose2>& T_lidar_preset;
   const DetectorConfig& config;
@@ -120,7 +121,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   std::array<int, 4> corner_candidate{-1, -1, -1, -1};
   for (int i = 0; i < set.count; ++i) corner_candidate[fit->corner_of_leg[i]] = set.legs[i];
   ShelfEvidence ev = GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre,
-                                    in.angle_increment_rad, config.evidence);
+                                    in.shelf_like_spans, in.angle_increment_rad, config.evidence);
   ev.confidence = ShelfConfidence(ev, refined.err_sum, config.evidence);
   rec.confidence = ev.confidence;
   rec.legs_visible = ev.legs_seen;
@@ -227,7 +228,11 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   stats.leg_sets = static_cast<int>(sets.size());
 
   LegFitCache cache;
-  const ScoreInputs inputs{pre, angle_increment_rad, T_lidar_preset, config_};
+  std::vector<char> shelf_like_spans(pre.spans.size(), 0);
+  for (const LegSet& set : sets) {
+    for (int i = 0; i < set.count; ++i) shelf_like_spans[pre.candidates[set.legs[i]].span] = 1;
+  }
+  const ScoreInputs inputs{pre, shelf_like_spans, angle_increment_rad, T_lidar_preset, config_};
   std::vector<Hypothesis> hypotheses;
   for (const LegSet& set : sets) {
     std::array<Eigen::Vector2d, 4> rough{};

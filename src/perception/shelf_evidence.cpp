@@ -74,6 +74,14 @@ double SeenWidth(const Cluster& c, double alpha) {
   return c.centroid.norm() * (span + alpha);
 }
 
+// Objects under a shelf are excused in part when four legs vouch for it, or when a leg is
+// missing because something hides it (the scene is cluttered there, and the hider may be more
+// than one cluster, like a person's two legs). With a leg missing for no visible reason the free
+// space is most of what is left to tell a shelf from furniture or posts: it counts in full.
+double ObjectPointWeight(const ShelfEvidence& ev, const EvidenceConfig& config) {
+  return ev.legs_seen >= 4 || ev.legs_occluded > 0 ? config.object_point_weight : 1.0;
+}
+
 }  // namespace
 
 double LegSilhouetteWidth(const geometry::LegModel& leg, double leg_yaw,
@@ -90,8 +98,8 @@ double LegSilhouetteWidth(const geometry::LegModel& leg, double leg_yaw,
 ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              const geometry::ShelfModel& model,
                              const std::array<int, 4>& corner_candidate,
-                             const PreprocessOutput& pre, double angle_increment_rad,
-                             const EvidenceConfig& config) {
+                             const PreprocessOutput& pre, const std::vector<char>& shelf_like_spans,
+                             double angle_increment_rad, const EvidenceConfig& config) {
   ShelfEvidence ev;
   const double alpha = std::abs(angle_increment_rad);
   const auto corners = model.LegCentres();
@@ -125,10 +133,10 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     ev.legs_seen_through += v == LegView::kSeenThrough;
   }
 
-  // Free space: at the scan height a shelf's footprint is empty between its legs. A leg-sized
-  // cluster inside is the signature of a phantom made of two neighbours' legs (the legs it
-  // skips stand inside it) or of posts in clutter; larger objects (a person's legs, a box) may
-  // well stand under a real shelf and weigh less.
+  // Free space: at the scan height a shelf's footprint is empty between its legs. A leg of some
+  // other shelf-shaped leg set standing inside is the signature of a phantom made of two
+  // neighbours' legs (the legs it skips stand inside it); anything else inside (a person's
+  // legs, a box, a post) may well stand under a real shelf and weighs less.
   const geometry::Pose2 T_shelf_lidar = T_lidar_shelf.inverse();
   const double hx = 0.5 * model.length_m - config.interior_margin_m;
   const double hy = 0.5 * model.width_m - config.interior_margin_m;
@@ -149,6 +157,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     }
     ev.interior_points += inside;
     if (inside == 0 || span.extent_m > leg_extent + config.leg_size_margin_m) continue;
+    if (s >= shelf_like_spans.size() || !shelf_like_spans[s]) continue;
     ev.interior_leg_points += inside;
     const Eigen::Vector2d c = T_shelf_lidar * span.centroid;
     if (std::abs(c.x()) < hx && std::abs(c.y()) < hy) ++ev.foreign_legs_inside;
@@ -165,7 +174,7 @@ double ShelfConfidence(const ShelfEvidence& ev, double err_sum_m, const Evidence
   const double fit = 1.0 / (1.0 + e * e);
   const double blocked =
       ev.interior_leg_points +
-      config.object_point_weight * (ev.interior_points - ev.interior_leg_points) +
+      ObjectPointWeight(ev, config) * (ev.interior_points - ev.interior_leg_points) +
       config.foreign_leg_points * ev.foreign_legs_inside;
   const double free_space = 1.0 / (1.0 + blocked / config.interior_scale_points);
   const double w = ev.leg_width_error_m / config.leg_width_scale_m;

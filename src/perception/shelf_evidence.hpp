@@ -30,8 +30,8 @@ struct ShelfEvidence {
   int legs_seen_through = 0;                          ///< kSeenThrough
   int interior_points = 0;       ///< points inside the footprint shrunk by interior_margin_m,
                                  ///< not counting the occluders that hide one of its legs
-  int interior_leg_points = 0;   ///< of interior_points, those in leg-sized clusters
-  int foreign_legs_inside = 0;   ///< leg-sized clusters (not its own) standing inside
+  int interior_leg_points = 0;   ///< of interior_points, those of foreign legs
+  int foreign_legs_inside = 0;   ///< legs of other leg sets (not its own) standing inside
   double leg_width_error_m = 0;  ///< worst |seen width - model leg's silhouette| over its legs
   double confidence = 0.0;       ///< [0, 1], see ShelfConfidence
 };
@@ -39,19 +39,22 @@ struct ShelfEvidence {
 /// Gathers the evidence for a shelf at `T_lidar_shelf` of `model` whose model corner k is the
 /// leg candidate `corner_candidate[k]` (index into pre.candidates, -1 when no cluster).
 /// `pre` must come from Preprocess on the same scan (its points are in beam order).
+/// `shelf_like_spans[s]` is true for the clusters that belong to some leg set of the search
+/// (legs of some shelf-shaped group): inside a footprint they are the phantom's signature.
 ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              const geometry::ShelfModel& model,
                              const std::array<int, 4>& corner_candidate,
-                             const PreprocessOutput& pre, double angle_increment_rad,
-                             const EvidenceConfig& config);
+                             const PreprocessOutput& pre, const std::vector<char>& shelf_like_spans,
+                             double angle_increment_rad, const EvidenceConfig& config);
 
 /// Confidence in [0, 1]: the product of
 /// - leg support: (seen + occluded_credit * occluded + unobserved_credit * unobserved) / 4,
 ///   a leg seen through counts 0;
 /// - fit: 1 / (1 + (err_sum / fit_scale_m)^2), the Eq. 2 error of the fitted legs;
 /// - free space: 1 / (1 + blocked / interior_scale_points), where blocked counts each interior
-///   point of a leg-sized cluster once, each other interior point object_point_weight times,
-///   and each leg-sized cluster standing inside foreign_leg_points more;
+///   point of a foreign leg once, each other interior point object_point_weight times (once
+///   when a leg is missing and nothing hides it), and each foreign leg inside
+///   foreign_leg_points more;
 /// - leg size: 1 / (1 + (leg_width_error_m / leg_width_scale_m)^2).
 /// It reads as "how sure the scan makes us that this is a shelf of this model here": 1 is four
 /// legs seen at model size with nothing between them.
