@@ -42,14 +42,14 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
   const double wide = std::atan2(half_leg, range) + 0.5 * alpha;
   const double narrow = std::atan2(half_leg - config.leg_position_tolerance_m, range);
   int present = 0, through = 0;
-  // Beams that fall well inside the silhouette: when the leg is far or thin there may be only
+  // Returns that fall well inside the silhouette: when the leg is far or thin there may be only
   // one, and then one beam through it is all the evidence the scan can give.
-  const int narrow_beams = static_cast<int>(std::floor(2.0 * narrow / alpha)) + 1;
-  const int needed = std::max(1, std::min(config.min_through_beams, narrow_beams));
+  int narrow_returns = 0;
   for (std::size_t i = 0; i < pre.points.size(); ++i) {
     const ScanPoint& q = pre.points[i];
     const double off = std::abs(geometry::AngleDiff(q.angle, bearing));
     if (off > wide) continue;
+    if (off <= narrow) ++narrow_returns;
     if (std::abs(q.range - range) <= config.present_margin_m) {
       ++present;
     } else if (q.range < range) {
@@ -62,7 +62,7 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
     look.view = LegView::kPresent;
   } else if (!look.occluder_spans.empty()) {
     look.view = LegView::kOccluded;
-  } else if (narrow > 0.0 && through >= needed) {
+  } else if (through > 0 && through >= std::min(config.min_through_beams, narrow_returns)) {
     look.view = LegView::kSeenThrough;
   }
   return look;

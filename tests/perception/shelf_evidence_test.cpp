@@ -107,9 +107,15 @@ TEST(ShelfEvidenceTest, ConfidenceIsOneForAPerfectShelfAndFallsWithEachFlaw) {
   hidden.legs_occluded = 1;
   EXPECT_NEAR(ShelfConfidence(hidden, 0.0, config), (3 + config.occluded_credit) / 4, 1e-12);
   EXPECT_NEAR(ShelfConfidence(ev, config.fit_scale_m, config), 0.5, 1e-12);
+  // Points of foreign legs count in full, those of other objects a quarter with four legs seen.
   ShelfEvidence inside = ev;
   inside.interior_points = static_cast<int>(config.interior_scale_points);
+  inside.interior_leg_points = inside.interior_points;
   EXPECT_NEAR(ShelfConfidence(inside, 0.0, config), 0.5, 1e-12);
+  ShelfEvidence object = ev;
+  object.interior_points =
+      static_cast<int>(config.interior_scale_points / config.object_point_weight);
+  EXPECT_NEAR(ShelfConfidence(object, 0.0, config), 0.5, 1e-12);
   ShelfEvidence through = ev;
   through.legs_seen = 3;
   through.legs_seen_through = 1;
