@@ -31,7 +31,7 @@ struct LegRayCost {
     const auto n = points->size();
     for (std::size_t i = 0; i < n; ++i) {
       const ScanPoint& q = (*points)[i];
-      const double ux = std::cos(q.angle), uy = std::sin(q.angle);
+      const double ux = q.p.x() / q.range, uy = q.p.y() / q.range;  // beam direction
       T* r = residual + 2 * i;
       if (round) {
         CircleRayResidual(c, ux, uy, q.range, radius, r);
@@ -171,9 +171,9 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
       double r[2];
       const ScanPoint& q = points[i];
       if (round) {
-        CircleRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, leg.Radius(), r);
+        CircleRayResidual(c.data(), q.p.x() / q.range, q.p.y() / q.range, q.range, leg.Radius(), r);
       } else {
-        BoxRayResidual<double>(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, cost.cos_a,
+        BoxRayResidual<double>(c.data(), q.p.x() / q.range, q.p.y() / q.range, q.range, cost.cos_a,
                                cost.sin_a, cost.half_x, cost.half_y, r);
       }
       weights[i] = HuberSqrtWeight(std::hypot(r[0], r[1]), config.loss_scale_m);
@@ -191,9 +191,9 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
   for (const auto& q : points) {
     double r[2];
     if (round) {
-      CircleRayResidual(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, leg.Radius(), r);
+      CircleRayResidual(c.data(), q.p.x() / q.range, q.p.y() / q.range, q.range, leg.Radius(), r);
     } else {
-      BoxRayResidual<double>(c.data(), std::cos(q.angle), std::sin(q.angle), q.range, cost.cos_a,
+      BoxRayResidual<double>(c.data(), q.p.x() / q.range, q.p.y() / q.range, q.range, cost.cos_a,
                              cost.sin_a, cost.half_x, cost.half_y, r);
     }
     sum_sq += r[0] * r[0] + r[1] * r[1];

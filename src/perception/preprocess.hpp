@@ -12,7 +12,8 @@
 
 namespace shelfdock::perception {
 
-/// One valid return, in the scan's frame (`lidar`, sensor at the origin).
+/// One valid return, in the scan's frame (`lidar`, sensor at the origin). Invariant: p = range *
+/// (cos angle, sin angle) with range > 0 (the fits take the beam direction as p / range).
 struct ScanPoint {
   Eigen::Vector2d p = Eigen::Vector2d::Zero();  ///< [m] position, lidar frame
   double range = 0.0;                           ///< [m]

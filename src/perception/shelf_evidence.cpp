@@ -138,6 +138,10 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   // neighbours' legs (the legs it skips stand inside it); anything else inside (a person's
   // legs, a box, a post) may well stand under a real shelf and weighs less.
   const geometry::Pose2 T_shelf_lidar = T_lidar_shelf.inverse();
+  // Rotation and translation once: transforming each point with Pose2 would evaluate the
+  // rotation's sine and cosine per point.
+  const Eigen::Matrix2d R = T_shelf_lidar.rotation();
+  const Eigen::Vector2d t = T_shelf_lidar.translation();
   const double hx = 0.5 * model.length_m - config.interior_margin_m;
   const double hy = 0.5 * model.width_m - config.interior_margin_m;
   const double reach = 0.5 * model.Diagonal();
@@ -152,14 +156,14 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     if (listed(own_spans, si) || listed(excused_spans, si)) continue;
     int inside = 0;
     for (std::size_t i = span.begin; i < span.end; ++i) {
-      const Eigen::Vector2d p = T_shelf_lidar * pre.points[i].p;
+      const Eigen::Vector2d p = R * pre.points[i].p + t;
       if (std::abs(p.x()) < hx && std::abs(p.y()) < hy) ++inside;
     }
     ev.interior_points += inside;
     if (inside == 0 || span.extent_m > leg_extent + config.leg_size_margin_m) continue;
     if (s >= shelf_like_spans.size() || !shelf_like_spans[s]) continue;
     ev.interior_leg_points += inside;
-    const Eigen::Vector2d c = T_shelf_lidar * span.centroid;
+    const Eigen::Vector2d c = R * span.centroid + t;
     if (std::abs(c.x()) < hx && std::abs(c.y()) < hy) ++ev.foreign_legs_inside;
   }
   return ev;
