@@ -221,7 +221,17 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   stats.leg_candidates = static_cast<int>(pre.candidates.size());
   std::vector<Eigen::Vector2d> centres;
   centres.reserve(pre.candidates.size());
-  for (const auto& c : pre.candidates) centres.push_back(c.centroid);
+  // The points lie on a leg's near side, so its centroid sits short of its centre by about half
+  // the leg's depth along the view; at close range (the sensor beside or under a large shelf)
+  // that bias alone can break Eq. 2's tolerances. The search uses centroids pushed back by the
+  // smallest leg's half depth (no model is known yet), the fits then find the true centres.
+  double half_depth = std::numeric_limits<double>::infinity();
+  for (const auto& m : models_) half_depth = std::min(half_depth, 0.5 * m.leg.width_m);
+  for (const auto& c : pre.candidates) {
+    const double r = c.centroid.norm();
+    centres.push_back(r > half_depth ? Eigen::Vector2d(c.centroid * (1.0 + half_depth / r))
+                                     : c.centroid);
+  }
 
   // 3.2 geometric search.
   const std::vector<LegSet> sets = SearchLegSets(centres, models_, config_.leg_search);
