@@ -254,16 +254,24 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     const Eigen::Vector2d long_edge = edges.first_edge_long ? Eigen::Vector2d(rough[1] - rough[0])
                                                             : Eigen::Vector2d(rough[2] - rough[1]);
     const double hint = std::atan2(long_edge.y(), long_edge.x());
+    // The model of a leg set is the one its fitted legs match best (Eq. 2 on the fitted
+    // centres); the evidence, which barely differs between close models, does not choose it.
+    std::optional<Hypothesis> best;
     for (const ModelPair& pair : pairs) {
       ++stats.hypotheses;
       Hypothesis h = Score(set, models_[pair.model], pair.model, hint, inputs, cache);
       if (h.record.verdict == Verdict::kReturned) {
-        hypotheses.push_back(std::move(h));
-        continue;
+        if (!best) {
+          best = std::move(h);
+          continue;
+        }
+        if (h.detection.err_sum < best->detection.err_sum) std::swap(h, *best);
+        h.record.verdict = Verdict::kModel;  // the same legs fit another model better
       }
       Count(h.record.verdict, stats.rejected);
       if (explain) result.hypotheses.push_back(std::move(h.record));
     }
+    if (best) hypotheses.push_back(std::move(*best));
   }
 
   // Hypotheses compete for legs: the disjoint set with the most support wins. The weight is
