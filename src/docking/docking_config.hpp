@@ -40,6 +40,9 @@ struct ShelfTrackerConfig {
   double drift_sigma_yaw_per_m = 0.003;  ///< [rad/sqrt(m)]
   double preset_sigma_xy_m = 0.3;        ///< [m] prior std dev of the preset pose
   double preset_sigma_yaw_rad = 0.2;     ///< [rad]
+  /// Detections farther from the preset than this many preset_sigma_xy_m are another shelf
+  /// (a neighbour in an aisle), never this one, and are not fused.
+  double preset_gate_sigmas = 3.0;
 };
 
 /// Footprint and clearance checks (collision_check.hpp).
@@ -106,9 +109,16 @@ struct DockingConfig {
 
   geometry::Pose2 T_base_lidar{0.30, 0.0, 0.0};  ///< LiDAR mounting (nominal)
   double dock_yaw_offset_rad = 0.0;  ///< robot heading at the goal vs the shelf's long side
-  double entry_distance_m = 4.5;     ///< [m] docking area starts this far from the preset goal
+  double entry_distance_m = 4.5;  ///< [m] longest docking area: starts this far from the goal
+  double min_entry_distance_m = 1.2;  ///< [m] shortest docking area the free space may leave
+  double entry_tolerance_m = 0.05;    ///< [m] this near the entry counts as inside the area
+  double max_move_out_m = 1.0;  ///< [m] longest straight move to get free room to turn
+  int max_approach_plans = 3;   ///< approach plans (the first and after each move out)
   double replan_xy_m = 0.004;        ///< [m] goal change that triggers a re-plan
   double replan_yaw_rad = 0.004;     ///< [rad]
+  /// Re-plans allowed beyond those the goal's real movement explains: each re-plan must follow
+  /// a goal change of replan_xy_m / replan_yaw_rad, so the net change of the goal since the
+  /// first plan, in those units, bounds the useful ones; more means the goal oscillates.
   int max_replans = 40;
   double lidar_cutoff_m = 0.45;      ///< [m] remaining path below which the LiDAR is not used
   double leg_min_range_m = 0.15;     ///< [m] legs nearer the LiDAR than this are not trusted
@@ -119,6 +129,8 @@ struct DockingConfig {
   double lift_timeout_s = 10.0;      ///< [s]
   double timeout_s = 90.0;           ///< [s] whole attempt
   double control_period_s = 0.02;    ///< [s] expected Step period (used for stopping)
+  double abort_decel_factor = 1.5;   ///< abort and obstacle stops brake this much harder than
+                                     ///< the docking profile (max_decel_mps2), within the robot
 };
 
 /// Empty when valid, else "key: requirement" for the first bad value.

@@ -5,11 +5,13 @@
 #include <limits>
 #include <numbers>
 
+#include "docking/docking_area.hpp"
 #include "docking/path_planner.hpp"
 #include "docking/path_tracker.hpp"
 #include "geometry/angle.hpp"
 #include "perception/detector.hpp"
 #include "sim/lidar.hpp"
+#include "eval/known_map.hpp"
 #include "sim/world.hpp"
 
 namespace shelfdock::eval {
@@ -46,10 +48,8 @@ std::optional<sim::ShelfInstance> ShelfAbove(const sim::World& world, const Pose
 PoseError ErrorInShelfFrame(const Pose2& T_world_base, const Pose2& T_world_shelf,
                             double yaw_offset_rad) {
   const Pose2 T_shelf_base = T_world_shelf.inverse() * T_world_base;
-  Pose2 T_shelf_goal(0.0, 0.0, yaw_offset_rad);
-  if (std::abs(geometry::AngleDiff(T_shelf_base.yaw, T_shelf_goal.yaw)) > 0.5 * std::numbers::pi) {
-    T_shelf_goal = Pose2(0.0, 0.0, yaw_offset_rad + std::numbers::pi);
-  }
+  const Pose2 T_shelf_goal =
+      docking::GoalBranchNearHeading(Pose2(0.0, 0.0, yaw_offset_rad), T_shelf_base.yaw);
   const Pose2 e = T_shelf_goal.inverse() * T_shelf_base;
   return {e.x, e.y, e.yaw, true};
 }
@@ -58,10 +58,6 @@ PoseError ErrorInShelfFrame(const Pose2& T_world_base, const Pose2& T_world_shel
 void AddPhaseTime(docking::Phase phase, const docking::Command& cmd, double dt_s,
                   PhaseTimes* times) {
   using docking::Phase;
-  for (const std::string& e : cmd.events) {
-    if (e.rfind("code_check:", 0) == 0) ++times->code_checks;
-    if (e.rfind("adjust: try", 0) == 0) ++times->adjustments;
-  }
   switch (phase) {
     case Phase::kApproach:
       times->approach_s += dt_s;
@@ -125,6 +121,7 @@ DockingRun RunDocking(const sim::Scenario& scenario,
   if (target != nullptr) {
     if (const geometry::ShelfModel* m = FindModel(models, target->model_name)) task.model = *m;
   }
+  task.map_obstacles = KnownObstacles(scenario, models, seed);
   const std::optional<sim::ShelfInstance> true_shelf =
       scenario.world.Shelf(scenario.target_shelf_id);
 
@@ -141,7 +138,8 @@ DockingRun RunDocking(const sim::Scenario& scenario,
                          });
   perception::MarkerDetector marker_detector(config.marker);
 
-  sim::DiffDriveRobot robot(config.robot, scenario.T_map_robot_start, seed);
+  sim::DiffDriveRobot robot(config.robot, config.T_map_robot_start.value_or(scenario.T_map_robot_start),
+                            seed);
   sim::Lidar lidar(config.lidar, seed * 7919 + 1);
   const Pose2 T_base_lidar = dcfg.T_base_lidar;
   const double dt = dcfg.control_period_s;
@@ -278,6 +276,8 @@ DockingRun RunDocking(const sim::Scenario& scenario,
   run.time_s = robot.time_s() - start;
   run.replans = docker.replans();
   run.detections = docker.detections();
+  run.phases.code_checks = docker.code_checks();
+  run.phases.adjustments = docker.adjustments();
   return run;
 }
 
@@ -287,9 +287,10 @@ double PerfectKnowledgeTime(const sim::Scenario& scenario, const RunConfig& conf
   sim::DiffDriveConfig robot_cfg = config.robot;
   robot_cfg.odometry = {};
   sim::DiffDriveRobot robot(robot_cfg, scenario.T_map_robot_start, 0);
-  Pose2 goal = shelf->T_world_shelf * Pose2(0.0, 0.0, config.docking.dock_yaw_offset_rad);
-  if ((goal.inverse() * robot.T_world_base()).x > 0.0)
-    goal = goal * Pose2(0.0, 0.0, std::numbers::pi);
+  const Pose2 goal =
+      shelf->T_world_shelf * docking::NearerEndGoal(shelf->T_world_shelf,
+                                                    config.docking.dock_yaw_offset_rad,
+                                                    robot.T_world_base());
   const docking::ControllerConfig& ctl = config.docking.controller;
   const double dt = 1.0 / robot_cfg.control_rate_hz;
   docking::PathTracker tracker(ctl);
@@ -298,7 +299,7 @@ double PerfectKnowledgeTime(const sim::Scenario& scenario, const RunConfig& conf
   // the same approach as the Docker's (approach speed, arriving at max_speed_mps).
   const double along = (goal.inverse() * robot.T_world_base()).x;
   double t_entry = 0.0;
-  if (along < -(config.docking.entry_distance_m + 0.05)) {
+  if (along < -(config.docking.entry_distance_m + config.docking.entry_tolerance_m)) {
     const Pose2 entry = goal * Pose2(-config.docking.entry_distance_m, 0.0, 0.0);
     const docking::PlanResult approach =
         docking::PlanDockingPath(robot.T_world_base(), entry, config.docking.planner);

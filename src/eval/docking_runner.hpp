@@ -36,6 +36,8 @@ struct RunConfig {
   /// shelf whose code is missing or a covered lens.
   bool camera_blind = false;
   bool record = false;  ///< keep one RecordFrame per control step
+  /// Start here instead of the scenario's robot_start (a start-anywhere sweep).
+  std::optional<geometry::Pose2> T_map_robot_start;
 };
 
 /// The robot's final pose against the TRUE shelf centre in the shelf's goal frame.

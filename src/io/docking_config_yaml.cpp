@@ -43,6 +43,7 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("drift_sigma_yaw_per_m", k.drift_sigma_yaw_per_m);
     f.Read("preset_sigma_xy_m", k.preset_sigma_xy_m);
     f.Read("preset_sigma_yaw_rad", k.preset_sigma_yaw_rad);
+    f.Read("preset_gate_sigmas", k.preset_gate_sigmas);
     f.RejectUnknown();
   }
   {
@@ -107,6 +108,11 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
   top.Read("replan_xy_m", c.replan_xy_m);
   top.Read("replan_yaw_rad", c.replan_yaw_rad);
   top.Read("max_replans", c.max_replans);
+  top.Read("min_entry_distance_m", c.min_entry_distance_m);
+  top.Read("entry_tolerance_m", c.entry_tolerance_m);
+  top.Read("max_move_out_m", c.max_move_out_m);
+  top.Read("max_approach_plans", c.max_approach_plans);
+  top.Read("abort_decel_factor", c.abort_decel_factor);
   top.Read("lidar_cutoff_m", c.lidar_cutoff_m);
   top.Read("leg_min_range_m", c.leg_min_range_m);
   top.Read("leg_max_bearing_rad", c.leg_max_bearing_rad);

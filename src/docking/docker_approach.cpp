@@ -1,0 +1,136 @@
+// The approach stage: choose the docking area from the free space (which end of the shelf, how
+// long a straight), then reach its entry from wherever the robot stands: a smooth curve, turns on
+// the spot and straight moves, or first a straight move out (reversing) to where it can turn.
+#include <cmath>
+
+#include "docking/docker.hpp"
+#include "docking/path_planner.hpp"
+
+#include "docking/docker_detail.hpp"
+
+namespace shelfdock::docking {
+
+using detail::Fmt;
+using geometry::Pose2;
+
+void Docker::Start(const Observations& obs, Command* cmd) {
+  started_ = true;
+  t_start_ = obs.t_s;
+  last_t_ = obs.t_s - config_.control_period_s;
+  last_T_odom_base_ = obs.T_odom_base;
+  const Pose2& T_map_shelf = task_.T_map_shelf_preset;
+  const DockingAreaResult area =
+      ChooseDockingArea(T_map_shelf, obs.T_map_base_estimate, task_.map_obstacles, config_);
+  if (!area.area) {
+    Fail(OutcomeCode::kNoPath, area.reason, cmd);
+    return;
+  }
+  approach_.area = area.area;
+  T_shelf_goal_ = area.area->T_shelf_goal;
+  approach_.free_space = task_.map_obstacles;
+  for (const LegDisc& leg : LegDiscs(task_.model, T_map_shelf)) {
+    approach_.free_space.obstacles.push_back(leg);
+  }
+  cmd->events.push_back("docking_area: " + Fmt(area.area->entry_distance_m, 2) +
+                        " m straight, goal heading " + Fmt(area.area->T_shelf_goal.yaw, 3) +
+                        " rad in the shelf frame");
+}
+
+void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
+  if (++approach_.plans > config_.max_approach_plans) {
+    Fail(OutcomeCode::kNoPath,
+         "no approach after " + std::to_string(config_.max_approach_plans) + " plans", cmd);
+    return;
+  }
+  const Pose2 T_map_goal = task_.T_map_shelf_preset * T_shelf_goal_;
+  approach_.plan = PlanApproach(obs.T_map_base_estimate, T_map_goal,
+                                approach_.area->entry_distance_m, approach_.free_space, config_);
+  const ApproachPlan& plan = approach_.plan;
+  if (!plan.ok) {
+    Fail(OutcomeCode::kNoPath, plan.reason, cmd);
+    return;
+  }
+  approach_.T_odom_map = obs.T_odom_base * obs.T_map_base_estimate.inverse();
+  cmd->events.push_back("approach: " + std::string(ToString(plan.kind)) + ", docking area " +
+                        Fmt(plan.entry_distance_m, 2) + " m");
+  switch (plan.kind) {
+    case ApproachKind::kDockNow:
+      StartDocking(obs, cmd);
+      if (phase_ == Phase::kDock) StepDock(obs, cmd);
+      return;
+    case ApproachKind::kSmooth:
+      follower_.SetPath(plan.path, config_.controller.approach_speed_mps,
+                        config_.controller.max_speed_mps, last_v_cmd_);
+      ++path_version_;
+      approach_.step = ApproachState::Step::kFollow;
+      return;
+    case ApproachKind::kTurnThenSmooth:
+    case ApproachKind::kTurnDriveTurn:
+      manoeuvre_.StartTurn((approach_.T_odom_map * Pose2(0.0, 0.0, plan.first_turn_yaw_rad)).yaw);
+      approach_.step = ApproachState::Step::kFirstTurn;
+      return;
+    case ApproachKind::kMoveOut:
+      manoeuvre_.StartStraight(obs.T_odom_base, approach_.T_odom_map * plan.T_frame_move_to);
+      approach_.step = ApproachState::Step::kMoveOut;
+      return;
+  }
+}
+
+void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
+  using Step = ApproachState::Step;
+  const ApproachPlan& plan = approach_.plan;
+  bool finished = false;
+  switch (approach_.step) {
+    case Step::kPlan:
+      PlanApproachFrom(obs, cmd);
+      return;
+    case Step::kMoveOut:
+      cmd->velocity = manoeuvre_.Update(obs.T_odom_base, dt, &finished);
+      if (finished) approach_.step = Step::kPlan;
+      return;
+    case Step::kFirstTurn: {
+      cmd->velocity = manoeuvre_.Update(obs.T_odom_base, dt, &finished);
+      if (!finished) return;
+      // From where the turn really ended (the plan assumed a perfect turn).
+      const Pose2& here = obs.T_map_base_estimate;
+      Path path = StraightPath(here, plan.T_frame_entry, config_.planner.sample_step_m);
+      double end_speed = 0.0;
+      if (plan.kind == ApproachKind::kTurnThenSmooth) {
+        const PlanResult curve = PlanDockingPath(here, plan.T_frame_entry, config_.planner);
+        path = curve.ok ? curve.path : plan.path;
+        end_speed = config_.controller.max_speed_mps;
+      }
+      follower_.SetPath(std::move(path), config_.controller.approach_speed_mps, end_speed, 0.0);
+      ++path_version_;
+      approach_.step = Step::kFollow;
+      return;
+    }
+    case Step::kFollow: {
+      const TrackingStatus s = follower_.Update(obs.T_map_base_estimate, dt);
+      if (s.lost) {
+        Fail(OutcomeCode::kTrackingFailed,
+             "the robot left the approach path by " + Fmt(s.cross_track_m) + " m", cmd);
+        return;
+      }
+      if (!s.reached) {
+        cmd->velocity = s.command;
+        return;
+      }
+      if (plan.kind == ApproachKind::kTurnDriveTurn) {
+        manoeuvre_.StartTurn((approach_.T_odom_map * plan.T_frame_entry).yaw);
+        approach_.step = Step::kFinalTurn;
+        cmd->velocity = {};
+        return;
+      }
+      break;
+    }
+    case Step::kFinalTurn:
+      cmd->velocity = manoeuvre_.Update(obs.T_odom_base, dt, &finished);
+      if (!finished) return;
+      break;
+  }
+  StartDocking(obs, cmd);
+  if (phase_ == Phase::kDock) StepDock(obs, cmd);
+}
+
+}  // namespace shelfdock::docking
