@@ -1,5 +1,6 @@
 #include "docking/approach_planner.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "docking/path_planner.hpp"
@@ -74,7 +75,9 @@ ApproachPlan PlanApproach(const Pose2& T_frame_base, const Pose2& T_frame_goal, 
 
   // Inside the docking area already: the docking stage plans its own path from here.
   const Pose2 in_goal = T_frame_goal.inverse() * T_frame_base;
-  if (-in_goal.x <= max_entry_m + config.entry_tolerance_m) {
+  if (-in_goal.x <= max_entry_m + config.entry_tolerance_m &&
+      std::abs(in_goal.y) <= config.area_half_width_m &&
+      std::abs(geometry::WrapAngle(in_goal.yaw)) <= config.area_max_heading_rad) {
     const PlanResult direct = PlanDockingPath(T_frame_base, T_frame_goal, config.planner);
     if (direct.ok && check.PathClear(direct.path)) {
       plan.ok = true;
@@ -84,30 +87,39 @@ ApproachPlan PlanApproach(const Pose2& T_frame_base, const Pose2& T_frame_goal, 
       return plan;
     }
   }
+  // Candidates (kind, docking area) in order of preference: a longer straight gives the LiDAR
+  // more scans, a smooth entry saves the stop; each kind costs the straight length it is worth.
+  struct Candidate {
+    double score;
+    ApproachKind kind;
+    double d;
+  };
+  std::vector<Candidate> candidates;
   for (double d : entries) {
-    if (auto path = SmoothTo(T_frame_base, entry_at(d), check)) {
-      plan = {true, ApproachKind::kSmooth, d, entry_at(d), 0.0, {}, std::move(*path), {}};
-      return plan;
-    }
+    candidates.push_back({d, ApproachKind::kSmooth, d});
+    candidates.push_back({d - config.turn_penalty_m, ApproachKind::kTurnThenSmooth, d});
+    candidates.push_back({d - 2.0 * config.turn_penalty_m, ApproachKind::kTurnDriveTurn, d});
   }
-  if (check.TurnClear(T_frame_base)) {
-    for (double d : entries) {
-      const Pose2 entry = entry_at(d);
-      const Pose2 turned(T_frame_base.x, T_frame_base.y, HeadingTo(T_frame_base, entry));
-      if (auto path = SmoothTo(turned, entry, check)) {
-        plan = {true, ApproachKind::kTurnThenSmooth, d, entry, turned.yaw, {}, std::move(*path),
-                {}};
-        return plan;
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
+  const bool can_turn_here = check.TurnClear(T_frame_base);
+  for (const Candidate& c : candidates) {
+    const Pose2 entry = entry_at(c.d);
+    const Pose2 turned(T_frame_base.x, T_frame_base.y, HeadingTo(T_frame_base, entry));
+    if (c.kind == ApproachKind::kSmooth) {
+      if (auto path = SmoothTo(T_frame_base, entry, check)) {
+        return {true, c.kind, c.d, entry, 0.0, {}, std::move(*path), {}};
       }
-    }
-    for (double d : entries) {
-      const Pose2 entry = entry_at(d);
-      if (!check.TurnClear(entry)) continue;
-      const Pose2 turned(T_frame_base.x, T_frame_base.y, HeadingTo(T_frame_base, entry));
+    } else if (c.kind == ApproachKind::kTurnThenSmooth) {
+      if (!can_turn_here) continue;
+      if (auto path = SmoothTo(turned, entry, check)) {
+        return {true, c.kind, c.d, entry, turned.yaw, {}, std::move(*path), {}};
+      }
+    } else {
+      if (!can_turn_here || !check.TurnClear(entry)) continue;
       Path line = StraightPath(turned, entry, config.planner.sample_step_m);
       if (!check.PathClear(line)) continue;
-      plan = {true, ApproachKind::kTurnDriveTurn, d, entry, turned.yaw, {}, std::move(line), {}};
-      return plan;
+      return {true, c.kind, c.d, entry, turned.yaw, {}, std::move(line), {}};
     }
   }
   // Nothing from here: a straight move along the heading (forward or reversing, shorter first)

@@ -3,6 +3,7 @@
 // the spot and straight moves, or first a straight move out (reversing) to where it can turn.
 #include <cmath>
 
+#include "docking/collision_check.hpp"
 #include "docking/docker.hpp"
 #include "docking/path_planner.hpp"
 
@@ -13,30 +14,64 @@ namespace shelfdock::docking {
 using detail::Fmt;
 using geometry::Pose2;
 
-void Docker::Start(const Observations& obs, Command* cmd) {
+void Docker::Start(const Observations& obs, Command* /*cmd*/) {
   started_ = true;
   t_start_ = obs.t_s;
   last_t_ = obs.t_s - config_.control_period_s;
   last_T_odom_base_ = obs.T_odom_base;
-  const Pose2& T_map_shelf = task_.T_map_shelf_preset;
-  const DockingAreaResult area =
-      ChooseDockingArea(T_map_shelf, obs.T_map_base_estimate, task_.map_obstacles, config_);
-  if (!area.area) {
-    Fail(OutcomeCode::kNoPath, area.reason, cmd);
-    return;
-  }
-  approach_.area = area.area;
-  T_shelf_goal_ = area.area->T_shelf_goal;
-  approach_.free_space = task_.map_obstacles;
-  for (const LegDisc& leg : LegDiscs(task_.model, T_map_shelf)) {
-    approach_.free_space.obstacles.push_back(leg);
-  }
-  cmd->events.push_back("docking_area: " + Fmt(area.area->entry_distance_m, 2) +
-                        " m straight, goal heading " + Fmt(area.area->T_shelf_goal.yaw, 3) +
-                        " rad in the shelf frame");
 }
 
+namespace {
+
+/// The map's obstacles and what the scan sees (walls and neighbours where they really stand;
+/// the map is only as good as its presets), except near the target, whose legs are placed from
+/// the preset and later from detections.
+FreeSpace ApproachFreeSpace(const DockingTask& task, const DockingConfig& config,
+                            const Observations& obs) {
+  FreeSpace space = task.map_obstacles;
+  if (obs.scan == nullptr) return space;
+  constexpr double kPointRadius_m = 0.02;
+  const double keep_out = config.tracker.preset_sigma_xy_m + config.safety.leg_exclusion_m;
+  const Pose2 T_map_lidar = obs.T_map_base_estimate * config.T_base_lidar;
+  const Pose2 T_shelf_map = task.T_map_shelf_preset.inverse();
+  const geometry::LaserScan& scan = *obs.scan;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double r = scan.ranges[i];
+    if (!std::isfinite(r) || r < scan.range_min || r > scan.range_max) continue;
+    const double a = scan.BeamAngle(i);
+    const Eigen::Vector2d p_map = T_map_lidar * Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
+    const Eigen::Vector2d p_shelf = T_shelf_map * p_map;
+    if (std::abs(p_shelf.x()) < 0.5 * task.model.length_m + keep_out &&
+        std::abs(p_shelf.y()) < 0.5 * task.model.width_m + keep_out) {
+      continue;
+    }
+    space.obstacles.push_back({p_map, kPointRadius_m});
+  }
+  return space;
+}
+
+}  // namespace
+
 void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
+  // Plan on a fresh scan (one scan period at most), so neighbours are where they really stand.
+  if (obs.scan == nullptr && obs.t_s - t_start_ < config_.scan_timeout_s) return;
+  approach_.free_space = ApproachFreeSpace(task_, config_, obs);
+  if (!approach_.area) {
+    const DockingAreaResult area = ChooseDockingArea(
+        task_.T_map_shelf_preset, obs.T_map_base_estimate, approach_.free_space, config_);
+    if (!area.area) {
+      Fail(OutcomeCode::kNoPath, area.reason, cmd);
+      return;
+    }
+    approach_.area = area.area;
+    T_shelf_goal_ = area.area->T_shelf_goal;
+    cmd->events.push_back("docking_area: " + Fmt(area.area->entry_distance_m, 2) +
+                          " m straight, goal heading " + Fmt(area.area->T_shelf_goal.yaw, 3) +
+                          " rad in the shelf frame");
+  }
+  for (const LegDisc& leg : LegDiscs(task_.model, task_.T_map_shelf_preset)) {
+    approach_.free_space.obstacles.push_back(leg);
+  }
   if (++approach_.plans > config_.max_approach_plans) {
     Fail(OutcomeCode::kNoPath,
          "no approach after " + std::to_string(config_.max_approach_plans) + " plans", cmd);

@@ -110,6 +110,9 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
   top.Read("max_replans", c.max_replans);
   top.Read("min_entry_distance_m", c.min_entry_distance_m);
   top.Read("entry_tolerance_m", c.entry_tolerance_m);
+  top.Read("area_half_width_m", c.area_half_width_m);
+  top.Read("area_max_heading_rad", c.area_max_heading_rad);
+  top.Read("turn_penalty_m", c.turn_penalty_m);
   top.Read("max_move_out_m", c.max_move_out_m);
   top.Read("max_approach_plans", c.max_approach_plans);
   top.Read("abort_decel_factor", c.abort_decel_factor);
