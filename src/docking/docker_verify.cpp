@@ -68,7 +68,21 @@ bool Docker::StartAdjustFromGuide(const Observations& obs, Command* cmd) {
   const VerifyConfig& v = config_.verify;
   const bool xy_ok =
       std::abs(offset.x) <= v.tolerance_xy_m && std::abs(offset.y) <= v.tolerance_xy_m;
-  if (xy_ok && std::abs(offset.yaw) <= v.tolerance_yaw_rad) return false;
+  if (xy_ok && std::abs(offset.yaw) <= v.tolerance_yaw_rad) {
+    if (!v.check_on_the_way_in || static_cast<int>(guide_.tags.size()) < v.frames) return false;
+    // The readings taken on the way in are the check: standing still for more frames of the
+    // same code would only cost time.
+    ++verify_.code_checks;
+    verify_.code_offset = offset;
+    cmd->events.push_back("code_check: on the way in, " + std::to_string(guide_.tags.size()) +
+                          " readings, offset " + Fmt(offset.x, 4) + "," + Fmt(offset.y, 4) + "," +
+                          Fmt(offset.yaw, 4));
+    phase_ = Phase::kLift;
+    phase_start_t_ = obs.t_s;
+    cmd->start_lift = true;
+    cmd->events.push_back("lift_started");
+    return true;
+  }
   if (std::hypot(offset.x, offset.y) > v.max_correction_m) return false;  // the check decides
   ++verify_.adjust_tries;
   // Within the position tolerance only the heading is corrected (a turn in place).

@@ -73,6 +73,9 @@ struct VerifyConfig {
   double adjust_yaw_rate_radps = 0.5;    ///< [rad/s]
   double adjust_yaw_accel_radps2 = 1.8;  ///< [rad/s^2] braking of each rotation
   double max_correction_m = 0.05;        ///< [m] larger offsets are not corrected blind
+  /// Lift without a standing check when at least `frames` code readings taken on the way in put
+  /// the stop within the tolerance (odometry carries them over the last centimetres).
+  bool check_on_the_way_in = true;
 };
 
 /// The upward camera used in advance (paper 3.5: "When approaching the recognizing position, we

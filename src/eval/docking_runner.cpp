@@ -223,6 +223,11 @@ DockingRun RunDocking(const sim::Scenario& scenario,
       if (true_shelf) {
         run.error_after_check = ErrorInShelfFrame(robot.T_world_base(), true_shelf->T_world_shelf,
                                                   dcfg.dock_yaw_offset_rad);
+        // Checked on the way in and lifted at once: the stop is the LiDAR-guided pose.
+        if (!before_check_set) {
+          before_check_set = true;
+          run.error_before_check = run.error_after_check;
+        }
       }
     }
     for (const sim::LegFootprint& leg : legs) {

@@ -75,6 +75,7 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("adjust_yaw_rate_radps", k.adjust_yaw_rate_radps);
     f.Read("adjust_yaw_accel_radps2", k.adjust_yaw_accel_radps2);
     f.Read("max_correction_m", k.max_correction_m);
+    f.Read("check_on_the_way_in", k.check_on_the_way_in);
     f.RejectUnknown();
   }
   {

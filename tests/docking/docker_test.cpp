@@ -25,6 +25,7 @@ struct ScriptedRun {
   DockingTask task;
   Pose2 T_world_shelf{5.0, 1.0, 0.2};  ///< true shelf (= preset unless the test moves it)
   Pose2 T_world_base{0.0, 1.0, 0.0};   ///< true robot
+  Pose2 preset_error{0.05, -0.04, 0.03};  ///< the preset against the true shelf (shelf frame)
   double t_s = 0.0;
   double scan_period_s = 1.0 / 15.0;
   double camera_period_s = 1.0 / 15.0;
@@ -55,8 +56,7 @@ struct ScriptedRun {
   }
 
   Outcome Run() {
-    task.T_map_shelf_preset = task.T_map_shelf_preset == Pose2() ? T_world_shelf
-                                                                 : task.T_map_shelf_preset;
+    task.T_map_shelf_preset = T_world_shelf * preset_error;
     int scans = 0;
     docker.emplace(config, task, Method::kContinuous,
                    [this, &scans](const std::vector<perception::ScanPoint>&, double,
@@ -149,16 +149,17 @@ TEST(Docker, OpenSpaceGoesThroughEveryPhaseInOrderAndLandsOnTheTruth) {
   ScriptedRun run;
   const Outcome outcome = run.Run();
   ASSERT_TRUE(outcome.ok()) << outcome.reason;
-  const std::vector<Phase> expected{Phase::kApproach, Phase::kDock, Phase::kVerify, Phase::kLift,
-                                    Phase::kDone};
+  // The code read on the way in is the check when it puts the stop within tolerance; else a
+  // standing check (kVerify) and adjustments (kAdjust) come before the lift.
+  const std::vector<Phase> expected{Phase::kApproach, Phase::kDock, Phase::kLift, Phase::kDone};
   std::vector<Phase> seen;
   for (Phase p : run.phases) {
-    if (p != Phase::kAdjust) seen.push_back(p);  // an adjustment may come between verifies
+    if (p != Phase::kAdjust && p != Phase::kVerify) seen.push_back(p);
   }
   seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
   EXPECT_EQ(seen, expected);
   ASSERT_TRUE(run.docker->docking_area());
-  EXPECT_DOUBLE_EQ(run.docker->docking_area()->entry_distance_m, run.config.entry_distance_m);
+  EXPECT_NEAR(run.docker->docking_area()->entry_distance_m, run.config.entry_distance_m, 1e-6);
   EXPECT_EQ(run.docker->approach_kind(), ApproachKind::kSmooth);
   EXPECT_GE(run.docker->code_checks(), 1);
   const Pose2 e = run.Error();
@@ -192,6 +193,7 @@ TEST(Docker, AnAisleShortensTheDockingAreaToWhatFits) {
   // The shelf's long side across a 3 m aisle: its entry faces the aisle, whose far side (a rack
   // front) stands 3 m + half the shelf from its centre.
   run.T_world_shelf = Pose2(5.0, 2.1, 0.5 * std::numbers::pi);
+  run.preset_error = Pose2();  // the area is measured from the preset
   run.T_world_base = Pose2(0.0, 0.0, 0.0);
   AddWall({-1.0, -1.56}, {10.0, -1.56}, &run.task.map_obstacles);  // the opposite row's legs
   AddWall({-1.0, 3.0}, {10.0, 3.0}, &run.task.map_obstacles);      // rack behind the shelf
@@ -252,6 +254,9 @@ TEST(Docker, AGoalThatOscillatesIsTooManyReplans) {
   ScriptedRun run;
   run.config.max_replans = 3;
   run.config.tracker.gate_xy_m = 1.0;
+  // A tracker that follows each detection (tiny floor, large drift), so the goal moves with it.
+  run.config.tracker.min_sigma_xy_m = 1e-4;
+  run.config.tracker.drift_sigma_xy_per_m = 10.0;
   auto base = run.detect;
   run.detect = [base](const Pose2& T, int scan) {
     // 3 cm to either side on alternate scans: no net movement of the goal.
