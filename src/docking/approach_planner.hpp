@@ -25,8 +25,8 @@ std::string_view ToString(ApproachKind kind);
 struct ApproachPlan {
   bool ok = false;
   ApproachKind kind = ApproachKind::kDockNow;
-  double entry_distance_m = 0.0;  ///< [m] docking area used (entry this far behind the goal)
-  geometry::Pose2 T_frame_entry;  ///< the entry pose (goal heading)
+  double entry_distance_m = 0.0;    ///< [m] docking area used (entry this far behind the goal)
+  geometry::Pose2 T_frame_entry;    ///< the entry pose (goal heading)
   double first_turn_yaw_rad = 0.0;  ///< turn kinds: heading to turn to first
   geometry::Pose2 T_frame_move_to;  ///< kMoveOut: where the straight move ends
   Path path;           ///< kSmooth / kTurnThenSmooth: curve to the entry; kTurnDriveTurn: line

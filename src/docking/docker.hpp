@@ -8,8 +8,8 @@
 #include "docking/approach_planner.hpp"
 #include "docking/docking_area.hpp"
 #include "docking/docking_config.hpp"
-#include "docking/free_space.hpp"
 #include "docking/fine_adjust.hpp"
+#include "docking/free_space.hpp"
 #include "docking/odometry_buffer.hpp"
 #include "docking/outcome.hpp"
 #include "docking/path_tracker.hpp"
@@ -98,7 +98,7 @@ class Docker {
     return guide_.lidar_goal_before_camera;
   }
   int camera_corrections() const { return guide_.corrections; }
-  int code_checks() const { return verify_.code_checks; }  ///< standing code checks made
+  int code_checks() const { return verify_.code_checks; }   ///< standing code checks made
   int adjustments() const { return verify_.adjust_tries; }  ///< fine adjustments started
   /// The docking area chosen (valid once the approach is planned).
   const std::optional<DockingArea>& docking_area() const { return approach_.area; }

@@ -184,19 +184,21 @@ void Docker::StepDock(const Observations& obs, Command* cmd) {
   if (dock_.blocked_since_t >= 0.0) {
     if (obs.t_s - dock_.blocked_since_t > config_.safety.obstacle_wait_s) {
       Fail(OutcomeCode::kWouldCollide,
-           "an obstacle blocked the path for " + Fmt(obs.t_s - dock_.blocked_since_t, 1) + " s", cmd);
+           "an obstacle blocked the path for " + Fmt(obs.t_s - dock_.blocked_since_t, 1) + " s",
+           cmd);
       return;
     }
     cmd->velocity = BrakeCommand(dt);
     return;
   }
-  if (obs.camera_frame && !dock_.goal_is_parking && !dock_.lidar_in_use && config_.camera_guide.enabled) {
+  if (obs.camera_frame && !dock_.goal_is_parking && !dock_.lidar_in_use &&
+      config_.camera_guide.enabled) {
     GuideByCode(obs, cmd);
     if (phase_ != Phase::kDock) return;
   }
   const TrackingStatus status = follower_.Update(obs.T_odom_base, dt);
-  if (dock_.lidar_in_use && !tracker_.has_detection() && status.remaining_m < config_.must_detect_by_m &&
-      !dock_.goal_is_parking) {
+  if (dock_.lidar_in_use && !tracker_.has_detection() &&
+      status.remaining_m < config_.must_detect_by_m && !dock_.goal_is_parking) {
     Fail(OutcomeCode::kShelfNotFound,
          "no shelf recognised within " + Fmt(obs.t_s - docking_start_t_, 1) +
              " s of entering the docking area",

@@ -102,7 +102,8 @@ void Docker::StepVerify(const Observations& obs, Command* cmd) {
   if (!obs.marker) {
     if (++verify_.missing_frames > config_.verify.max_missing_frames) {
       Fail(OutcomeCode::kCodeNotFound,
-           "no code seen under the shelf in " + std::to_string(verify_.missing_frames) + " frames", cmd);
+           "no code seen under the shelf in " + std::to_string(verify_.missing_frames) + " frames",
+           cmd);
     }
     return;
   }

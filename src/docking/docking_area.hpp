@@ -23,7 +23,7 @@ geometry::Pose2 GoalBranchNearHeading(const geometry::Pose2& T_shelf_goal, doubl
 /// Where the autonomous stage starts: which end of the shelf, and how long the straight in front
 /// of it is (the paper's 4.5 m when there is room, down to what an aisle allows).
 struct DockingArea {
-  geometry::Pose2 T_shelf_goal;  ///< the robot's final pose in the shelf frame
+  geometry::Pose2 T_shelf_goal;   ///< the robot's final pose in the shelf frame
   double entry_distance_m = 0.0;  ///< [m] the entry lies this far behind the goal
 };
 

@@ -111,17 +111,17 @@ struct DockingConfig {
   BaselineConfig baseline;
 
   geometry::Pose2 T_base_lidar{0.30, 0.0, 0.0};  ///< LiDAR mounting (nominal)
-  double dock_yaw_offset_rad = 0.0;  ///< robot heading at the goal vs the shelf's long side
-  double entry_distance_m = 4.5;  ///< [m] longest docking area: starts this far from the goal
+  double dock_yaw_offset_rad = 0.0;   ///< robot heading at the goal vs the shelf's long side
+  double entry_distance_m = 4.5;      ///< [m] longest docking area: starts this far from the goal
   double min_entry_distance_m = 1.5;  ///< [m] shortest docking area the free space may leave
   double entry_tolerance_m = 0.05;    ///< [m] this near the entry counts as inside the area
   double area_half_width_m = 0.5;     ///< [m] the area is a corridor this wide each side
   double area_max_heading_rad = 0.8;  ///< [rad] inside it the robot may dock from this heading
-  double turn_penalty_m = 0.75;  ///< [m] of straight a turn on the spot is worth giving up
-  double max_move_out_m = 1.0;  ///< [m] longest straight move to get free room to turn
-  int max_approach_plans = 3;   ///< approach plans (the first and after each move out)
-  double replan_xy_m = 0.004;        ///< [m] goal change that triggers a re-plan
-  double replan_yaw_rad = 0.004;     ///< [rad]
+  double turn_penalty_m = 0.75;       ///< [m] of straight a turn on the spot is worth giving up
+  double max_move_out_m = 1.0;        ///< [m] longest straight move to get free room to turn
+  int max_approach_plans = 3;         ///< approach plans (the first and after each move out)
+  double replan_xy_m = 0.004;         ///< [m] goal change that triggers a re-plan
+  double replan_yaw_rad = 0.004;      ///< [rad]
   /// Re-plans allowed beyond those the goal's real movement explains: each re-plan must follow
   /// a goal change of replan_xy_m / replan_yaw_rad, so the net change of the goal since the
   /// first plan, in those units, bounds the useful ones; more means the goal oscillates.

@@ -8,7 +8,7 @@ namespace shelfdock::docking {
 /// How a docking attempt ended. Every failure is an expected outcome, reported as a value with a
 /// sentence that says why (Nav2's typed docking failures, without the exceptions).
 enum class OutcomeCode {
-  kPending,         ///< not finished yet: the value an Outcome holds until the Docker sets it
+  kPending,  ///< not finished yet: the value an Outcome holds until the Docker sets it
   kSuccess,
   kShelfNotFound,   ///< no shelf detected before the robot had to commit to the goal
   kDetectionLost,   ///< the shelf (or the LiDAR) was lost while it was still needed

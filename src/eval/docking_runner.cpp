@@ -8,10 +8,10 @@
 #include "docking/docking_area.hpp"
 #include "docking/path_planner.hpp"
 #include "docking/path_tracker.hpp"
+#include "eval/known_map.hpp"
 #include "geometry/angle.hpp"
 #include "perception/detector.hpp"
 #include "sim/lidar.hpp"
-#include "eval/known_map.hpp"
 #include "sim/world.hpp"
 
 namespace shelfdock::eval {
@@ -138,8 +138,8 @@ DockingRun RunDocking(const sim::Scenario& scenario,
                          });
   perception::MarkerDetector marker_detector(config.marker);
 
-  sim::DiffDriveRobot robot(config.robot, config.T_map_robot_start.value_or(scenario.T_map_robot_start),
-                            seed);
+  sim::DiffDriveRobot robot(config.robot,
+                            config.T_map_robot_start.value_or(scenario.T_map_robot_start), seed);
   sim::Lidar lidar(config.lidar, seed * 7919 + 1);
   const Pose2 T_base_lidar = dcfg.T_base_lidar;
   const double dt = dcfg.control_period_s;

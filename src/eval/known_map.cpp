@@ -46,7 +46,8 @@ docking::FreeSpace KnownObstacles(const sim::Scenario& scenario,
     const auto preset = scenario.PresetPose(shelf.id, seed);
     for (const geometry::ShelfModel& m : models) {
       if (m.name != shelf.model_name || !preset) continue;
-      for (const docking::LegDisc& leg : docking::LegDiscs(m, *preset)) map.obstacles.push_back(leg);
+      for (const docking::LegDisc& leg : docking::LegDiscs(m, *preset))
+        map.obstacles.push_back(leg);
     }
   }
   return map;

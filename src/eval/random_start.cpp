@@ -51,8 +51,8 @@ std::optional<geometry::Pose2> RandomStart(const sim::Scenario& scenario, std::u
     const double r = std::sqrt(r0 * r0 + (r1 * r1 - r0 * r0) * unit(rng));
     const double bearing = 2.0 * std::numbers::pi * unit(rng);
     const double yaw = 2.0 * std::numbers::pi * unit(rng) - std::numbers::pi;
-    const Eigen::Vector2d p =
-        target->T_world_shelf.translation() + r * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+    const Eigen::Vector2d p = target->T_world_shelf.translation() +
+                              r * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
     if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
     const geometry::Pose2 pose(p.x(), p.y(), yaw);
     if (space.Clearance(pose, footprint) >= config.clearance_m) return pose;

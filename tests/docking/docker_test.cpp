@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "docking/collision_check.hpp"
 #include "../common/paper_models.hpp"
+#include "docking/collision_check.hpp"
 
 namespace shelfdock::docking {
 namespace {
@@ -23,8 +23,8 @@ using geometry::Pose2;
 struct ScriptedRun {
   DockingConfig config;
   DockingTask task;
-  Pose2 T_world_shelf{5.0, 1.0, 0.2};  ///< true shelf (= preset unless the test moves it)
-  Pose2 T_world_base{0.0, 1.0, 0.0};   ///< true robot
+  Pose2 T_world_shelf{5.0, 1.0, 0.2};     ///< true shelf (= preset unless the test moves it)
+  Pose2 T_world_base{0.0, 1.0, 0.0};      ///< true robot
   Pose2 preset_error{0.05, -0.04, 0.03};  ///< the preset against the true shelf (shelf frame)
   double t_s = 0.0;
   double scan_period_s = 1.0 / 15.0;
@@ -104,9 +104,9 @@ struct ScriptedRun {
       if (cmd.start_lift) lift_at = t_s + lift_s;
       // A perfect differential drive: the command over one period along an arc.
       const double v = cmd.velocity.v_mps, w = cmd.velocity.w_radps;
-      T_world_base = T_world_base * Pose2(std::abs(w) < 1e-9 ? v * dt : v / w * std::sin(w * dt),
-                                          std::abs(w) < 1e-9 ? 0.0 : v / w * (1 - std::cos(w * dt)),
-                                          w * dt);
+      T_world_base =
+          T_world_base * Pose2(std::abs(w) < 1e-9 ? v * dt : v / w * std::sin(w * dt),
+                               std::abs(w) < 1e-9 ? 0.0 : v / w * (1 - std::cos(w * dt)), w * dt);
       if (each_step) each_step(this);
       t_s += dt;
     }
@@ -294,11 +294,11 @@ TEST(Docker, APushOffThePathIsATrackingFailure) {
 
 TEST(Docker, TypedOutcomesHaveDistinctNames) {
   std::set<std::string_view> names;
-  for (OutcomeCode c : {OutcomeCode::kPending, OutcomeCode::kSuccess, OutcomeCode::kShelfNotFound,
-                        OutcomeCode::kDetectionLost, OutcomeCode::kWouldCollide,
-                        OutcomeCode::kNoPath, OutcomeCode::kTrackingFailed,
-                        OutcomeCode::kWrongShelf, OutcomeCode::kCodeNotFound,
-                        OutcomeCode::kTimeout, OutcomeCode::kTooManyReplans}) {
+  for (OutcomeCode c :
+       {OutcomeCode::kPending, OutcomeCode::kSuccess, OutcomeCode::kShelfNotFound,
+        OutcomeCode::kDetectionLost, OutcomeCode::kWouldCollide, OutcomeCode::kNoPath,
+        OutcomeCode::kTrackingFailed, OutcomeCode::kWrongShelf, OutcomeCode::kCodeNotFound,
+        OutcomeCode::kTimeout, OutcomeCode::kTooManyReplans}) {
     EXPECT_TRUE(names.insert(ToString(c)).second) << ToString(c);
   }
 }

@@ -130,8 +130,8 @@ TEST(DockingSim, RandomStartsReachTheShelf) {
   const sim::Scenario s = f.Load("config/scenarios/paper_docking.yaml");
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     RunConfig config;
-    config.T_map_robot_start = RandomStart(s, seed, config.robot.footprint_length_m,
-                                           config.robot.footprint_width_m);
+    config.T_map_robot_start =
+        RandomStart(s, seed, config.robot.footprint_length_m, config.robot.footprint_width_m);
     ASSERT_TRUE(config.T_map_robot_start);
     const DockingRun run = RunDocking(s, f.models, Method::kContinuous, seed, config);
     EXPECT_TRUE(run.outcome.ok()) << "seed " << seed << ": " << run.outcome.reason;
