@@ -143,11 +143,15 @@ int RunEvalDocking(const DockOptions& opt) {
   for (docking::Method method : methods) {
     std::vector<eval::DockingRun> runs;
     nlohmann::json failures = nlohmann::json::array();
+    nlohmann::json touched = nlohmann::json::array();  // runs whose footprint met a true leg
     for (int i = 0; i < opt.runs; ++i) {
       const std::uint64_t seed = opt.seed + static_cast<std::uint64_t>(i);
       config.T_map_robot_start = StartFor(opt, scenario, config, seed);
       runs.push_back(eval::RunDocking(scenario, models, method, seed, config));
       const eval::DockingRun& run = runs.back();
+      if (run.min_leg_clearance_m <= 0.0) {
+        touched.push_back({{"seed", seed}, {"min_leg_clearance_m", run.min_leg_clearance_m}});
+      }
       if (!run.outcome.ok()) {
         nlohmann::json f{{"seed", seed},
                          {"result", docking::ToString(run.outcome.code)},
@@ -163,6 +167,7 @@ int RunEvalDocking(const DockOptions& opt) {
     mean_time[method == docking::Method::kContinuous ? 0 : 1] = s.mean_time_s;
     nlohmann::json summary = SummaryJson(s);
     summary["failures"] = failures;
+    summary["leg_contacts"] = touched;
     out[std::string(docking::ToString(method))] = summary;
   }
   if (mean_time[0] > 0.0 && mean_time[1] > 0.0) {

@@ -138,8 +138,12 @@ Command Docker::Step(const Observations& obs) {
       bool finished = false;
       cmd.velocity = adjust_.Update(obs.T_odom_base, dt, &finished);
       if (finished) {
-        StartVerify(obs.t_s, &cmd);
         cmd.events.push_back("adjust_done");
+        if (verify_.lift_after_adjust) {
+          StartLift(obs.t_s, &cmd);
+        } else {
+          StartVerify(obs.t_s, &cmd);
+        }
       }
       break;
     }

@@ -146,6 +146,7 @@ class Docker {
     int missing_frames = 0;
     int adjust_tries = 0;
     int code_checks = 0;
+    bool lift_after_adjust = false;  ///< the check was made on the way in: lift after the turn
   };
 
   void Start(const Observations& obs, Command* cmd);
@@ -155,6 +156,7 @@ class Docker {
   void StepDock(const Observations& obs, Command* cmd);
   void StepStand(const Observations& obs, Command* cmd);
   void StartVerify(double t_s, Command* cmd);
+  void StartLift(double t_s, Command* cmd);
   void StepVerify(const Observations& obs, Command* cmd);
   void ProcessScan(const Observations& obs, bool recognise, Command* cmd);
   void GuideByCode(const Observations& obs, Command* cmd);

@@ -31,7 +31,9 @@ FreeSpace ApproachFreeSpace(const DockingTask& task, const DockingConfig& config
   FreeSpace space = task.map_obstacles;
   if (obs.scan == nullptr) return space;
   constexpr double kPointRadius_m = 0.02;
-  const double keep_out = config.tracker.preset_sigma_xy_m + config.safety.leg_exclusion_m;
+  // The target's legs may stand a preset sigma off, and turned by a yaw sigma about its centre.
+  const double keep_out = config.tracker.preset_sigma_xy_m + config.safety.leg_exclusion_m +
+                          0.5 * task.model.length_m * std::sin(config.tracker.preset_sigma_yaw_rad);
   const Pose2 T_map_lidar = obs.T_map_base_estimate * config.T_base_lidar;
   const Pose2 T_shelf_map = task.T_map_shelf_preset.inverse();
   const geometry::LaserScan& scan = *obs.scan;

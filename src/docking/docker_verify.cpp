@@ -21,7 +21,15 @@ Pose2 Docker::TagGoal(const Pose2& T_tag_base) const {
   return GoalBranchNearHeading(T_shelf_goal_, T_tag_base.yaw);
 }
 
+void Docker::StartLift(double t_s, Command* cmd) {
+  phase_ = Phase::kLift;
+  phase_start_t_ = t_s;
+  cmd->start_lift = true;
+  cmd->events.push_back("lift_started");
+}
+
 void Docker::StartVerify(double t_s, Command* cmd) {
+  verify_.lift_after_adjust = false;
   phase_ = Phase::kVerify;
   phase_start_t_ = t_s;
   verify_.readings.clear();
@@ -85,7 +93,14 @@ bool Docker::StartAdjustFromGuide(const Observations& obs, Command* cmd) {
   }
   if (std::hypot(offset.x, offset.y) > v.max_correction_m) return false;  // the check decides
   ++verify_.adjust_tries;
-  // Within the position tolerance only the heading is corrected (a turn in place).
+  // Within the position tolerance only the heading is corrected (a turn in place): the readings
+  // on the way in were the check, and a turn of a few milliradians on odometry needs no other.
+  verify_.lift_after_adjust =
+      xy_ok && v.check_on_the_way_in && static_cast<int>(guide_.tags.size()) >= v.frames;
+  if (verify_.lift_after_adjust) {
+    ++verify_.code_checks;
+    verify_.code_offset = offset;
+  }
   adjust_.Start(obs.T_odom_base,
                 xy_ok ? obs.T_odom_base * Pose2(0.0, 0.0, -offset.yaw) : T_odom_goal);
   phase_ = Phase::kAdjust;

@@ -27,6 +27,8 @@ std::optional<std::string> Validate(const DockingConfig& c) {
            c.controller.creep_speed_mps < c.controller.max_speed_mps,
        "controller.creep_speed_mps: must be in (0, max_speed_mps)"},
       {positive(c.controller.goal_tolerance_m), "controller.goal_tolerance_m: must be > 0"},
+      {c.controller.heading_priority_m >= 0.0, "controller.heading_priority_m: must be >= 0"},
+      {positive(c.controller.heading_settle_m), "controller.heading_settle_m: must be > 0"},
       {positive(c.tracker.gate_xy_m), "tracker.gate_xy_m: must be > 0"},
       {positive(c.tracker.gate_yaw_rad), "tracker.gate_yaw_rad: must be > 0"},
       {c.tracker.reinit_after_rejects >= 1, "tracker.reinit_after_rejects: must be >= 1"},

@@ -27,6 +27,8 @@ struct ControllerConfig {
   double creep_speed_mps = 0.015;       ///< [m/s] slowest speed before the final stop
   double goal_tolerance_m = 0.0005;     ///< [m] stop when this close along the path
   double max_cross_track_m = 0.25;      ///< [m] farther off the path is a tracking failure
+  double heading_priority_m = 0.02;     ///< [m] before a stop: steer the heading only
+  double heading_settle_m = 0.004;      ///< [m] distance scale of that heading correction
 };
 
 /// Fusion of detections over time (shelf_tracker.hpp).
@@ -34,8 +36,8 @@ struct ShelfTrackerConfig {
   double gate_xy_m = 0.12;              ///< [m] reject detections jumping farther from the estimate
   double gate_yaw_rad = 0.12;           ///< [rad]
   int reinit_after_rejects = 6;         ///< consecutive rejections that restart the estimate
-  double min_sigma_xy_m = 0.004;        ///< [m] floor of a detection's std dev
-  double min_sigma_yaw_rad = 0.006;     ///< [rad]
+  double min_sigma_xy_m = 0.002;        ///< [m] floor of a detection's std dev
+  double min_sigma_yaw_rad = 0.003;     ///< [rad]
   double drift_sigma_xy_per_m = 0.004;  ///< [m/sqrt(m)] growth of odometry error per metre
   double drift_sigma_yaw_per_m = 0.003;  ///< [rad/sqrt(m)]
   double preset_sigma_xy_m = 0.3;        ///< [m] prior std dev of the preset pose
@@ -47,9 +49,12 @@ struct ShelfTrackerConfig {
 
 /// Footprint and clearance checks (collision_check.hpp).
 struct SafetyConfig {
-  double robot_length_m = 0.62;       ///< [m] footprint along the robot's x
-  double robot_width_m = 0.52;        ///< [m] footprint along the robot's y
-  double robot_offset_x_m = 0.0;      ///< [m] footprint centre ahead of the base origin
+  // The robot's footprint is the robot's, not a docking setting: whoever builds the Docker copies
+  // it from the robot description (config/robot.yaml, sim::DiffDriveConfig, whose defaults these
+  // repeat for a Docker built without one); the docking YAML does not set it.
+  double robot_length_m = 0.70;       ///< [m] footprint along the robot's x (from --robot)
+  double robot_width_m = 0.50;        ///< [m] footprint along the robot's y (from --robot)
+  double robot_offset_x_m = 0.0;      ///< [m] footprint centre ahead of the base (robot's)
   double leg_margin_m = 0.05;         ///< [m] required clearance to every leg
   double obstacle_margin_m = 0.05;    ///< [m] clearance to unknown scan points
   double obstacle_lookahead_m = 1.2;  ///< [m] path length checked for obstacles
@@ -119,7 +124,7 @@ struct DockingConfig {
   double area_max_heading_rad = 0.8;  ///< [rad] inside it the robot may dock from this heading
   double turn_penalty_m = 0.75;       ///< [m] of straight a turn on the spot is worth giving up
   double max_move_out_m = 1.0;        ///< [m] longest straight move to get free room to turn
-  int max_approach_plans = 3;         ///< approach plans (the first and after each move out)
+  int max_approach_plans = 5;         ///< approach plans (the first and after each move out)
   double replan_xy_m = 0.004;         ///< [m] goal change that triggers a re-plan
   double replan_yaw_rad = 0.004;      ///< [rad]
   /// Re-plans allowed beyond those the goal's real movement explains: each re-plan must follow

@@ -210,7 +210,9 @@ DockingRun RunDocking(const sim::Scenario& scenario,
           ErrorInShelfFrame(T_world_odom * *docker.lidar_goal_before_camera(),
                             true_shelf->T_world_shelf, dcfg.dock_yaw_offset_rad);
     }
-    if (!verify_seen && docker.phase() == docking::Phase::kVerify && true_shelf) {
+    const bool stopped_for_check =
+        docker.phase() == docking::Phase::kVerify || docker.phase() == docking::Phase::kAdjust;
+    if (!verify_seen && stopped_for_check && true_shelf) {
       verify_seen = true;
       if (!before_check_set) {
         before_check_set = true;

@@ -29,6 +29,8 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("creep_speed_mps", k.creep_speed_mps);
     f.Read("goal_tolerance_m", k.goal_tolerance_m);
     f.Read("max_cross_track_m", k.max_cross_track_m);
+    f.Read("heading_priority_m", k.heading_priority_m);
+    f.Read("heading_settle_m", k.heading_settle_m);
     f.RejectUnknown();
   }
   {
@@ -49,9 +51,6 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
   {
     YamlFields f(top.Child("safety"), path, "safety");
     auto& k = c.safety;
-    f.Read("robot_length_m", k.robot_length_m);
-    f.Read("robot_width_m", k.robot_width_m);
-    f.Read("robot_offset_x_m", k.robot_offset_x_m);
     f.Read("leg_margin_m", k.leg_margin_m);
     f.Read("obstacle_margin_m", k.obstacle_margin_m);
     f.Read("obstacle_lookahead_m", k.obstacle_lookahead_m);

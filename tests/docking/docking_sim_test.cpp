@@ -80,6 +80,8 @@ TEST(DockingSim, EachFailureIsReportedWithItsReason) {
     const char* config = nullptr;  ///< docking config YAML (tests/data)
   };
   const char* kPaper = "config/scenarios/paper_docking.yaml";
+  // too_many_replans needs a goal that moves back and forth, which the simulator's shelves do
+  // not do: docker_test.cpp scripts it.
   const Case cases[] = {
       {"tests/data/docking_shelf_absent.yaml", OutcomeCode::kShelfNotFound},
       {"tests/data/docking_wrong_code.yaml", OutcomeCode::kWrongShelf},
@@ -87,8 +89,6 @@ TEST(DockingSim, EachFailureIsReportedWithItsReason) {
       {kPaper, OutcomeCode::kDetectionLost, 3.0},
       {kPaper, OutcomeCode::kCodeNotFound, -1.0, true},
       {kPaper, OutcomeCode::kTimeout, -1.0, false, "tests/data/docking_config_tiny_timeout.yaml"},
-      {kPaper, OutcomeCode::kTooManyReplans, -1.0, false,
-       "tests/data/docking_config_no_replans.yaml"},
   };
   for (const Case& c : cases) {
     RunConfig config;
