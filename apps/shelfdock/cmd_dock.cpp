@@ -49,8 +49,8 @@ eval::RunConfig MakeRunConfig(const DockOptions& opt) {
   if (!opt.config.empty()) config.docking = io::ReadDockingConfig(opt.config);
   if (!opt.lidar.empty()) config.lidar = io::ReadLidarConfig(opt.lidar);
   if (!opt.robot.empty()) config.robot = io::ReadRobotConfig(opt.robot);
-  config.blackout_start_s = opt.blackout_s;
-  config.camera_blind = opt.camera_blind;
+  config.sensors.blackout_start_s = opt.blackout_s;
+  config.sensors.camera_blind = opt.camera_blind;
   return config;
 }
 

@@ -11,7 +11,6 @@
 #include "eval/known_map.hpp"
 #include "geometry/angle.hpp"
 #include "perception/detector.hpp"
-#include "sim/lidar.hpp"
 #include "sim/world.hpp"
 
 namespace shelfdock::eval {
@@ -30,17 +29,6 @@ const geometry::ShelfModel* FindModel(const std::vector<geometry::ShelfModel>& m
     if (m.name == name) return &m;
   }
   return nullptr;
-}
-
-/// The shelf whose leg rectangle contains the robot's centre (the one the camera looks at).
-std::optional<sim::ShelfInstance> ShelfAbove(const sim::World& world, const Pose2& T_world_base) {
-  for (const sim::ShelfInstance& s : world.shelves()) {
-    const Pose2 local = s.T_world_shelf.inverse() * T_world_base;
-    if (std::abs(local.x) < 0.5 * s.model.length_m && std::abs(local.y) < 0.5 * s.model.width_m) {
-      return s;
-    }
-  }
-  return std::nullopt;
 }
 
 /// Error of the robot against the true shelf centre in the goal frame (which end it entered
@@ -140,19 +128,15 @@ DockingRun RunDocking(const sim::Scenario& scenario,
 
   sim::DiffDriveRobot robot(config.robot,
                             config.T_map_robot_start.value_or(scenario.T_map_robot_start), seed);
-  sim::Lidar lidar(config.lidar, seed * 7919 + 1);
   const Pose2 T_base_lidar = dcfg.T_base_lidar;
   const double dt = dcfg.control_period_s;
-  const double scan_period = config.lidar.ScanPeriod();
-  double next_scan_t0 = robot.time_s();
-  double next_camera_t = robot.time_s();
-  int camera_frames = 0;
+  sim::SensorRig sensors(config.lidar, config.camera, config.sensors, T_base_lidar, seed,
+                         robot.time_s());
   int last_path_version = 0;
   bool verify_seen = false;
   bool before_check_set = false;
   bool camera_on = false;  // as the Docker commanded in the last step
   const std::vector<sim::LegFootprint> legs = scenario.world.LegFootprints();
-  geometry::LaserScan scan;
 
   while (!docker.done() && robot.time_s() < config.max_sim_time_s) {
     const double t = robot.time_s();
@@ -161,38 +145,13 @@ DockingRun RunDocking(const sim::Scenario& scenario,
     obs.T_odom_base = robot.T_odom_base();
     obs.T_map_base_estimate = robot.T_map_base_estimate();
     obs.lift_done = robot.LiftDone();
-
-    // A scan started at t0 is complete (and delivered) one period later.
-    bool have_scan = false;
-    if (t + 1e-9 >= next_scan_t0 + scan_period) {
-      const double t0 = next_scan_t0;
-      next_scan_t0 += scan_period;
-      const double since_entry = t - docker.docking_start_time();
-      const bool blackout = config.blackout_start_s >= 0.0 && std::isfinite(since_entry) &&
-                            since_entry >= config.blackout_start_s &&
-                            since_entry < config.blackout_start_s + config.blackout_duration_s;
-      if (!blackout) {
-        scan = lidar.Scan(
-            scenario.world,
-            [&robot, &T_base_lidar](double ti) { return robot.T_world_base_at(ti) * T_base_lidar; },
-            t0);
-        obs.scan = &scan;
-        have_scan = true;
-      }
-    }
-    // The camera, when on, at its frame rate.
-    if ((camera_on || docker.phase() == docking::Phase::kVerify) && t + 1e-9 >= next_camera_t) {
-      next_camera_t = t + 1.0 / config.camera_rate_hz;
-      obs.camera_frame = true;
-      const auto above =
-          config.camera_blind ? std::nullopt : ShelfAbove(scenario.world, robot.T_world_base());
-      if (above) {
-        const geometry::GrayImage image = sim::RenderMarker(
-            config.camera, above->id, sim::TagInCamera(robot.T_world_base(), above->T_world_shelf),
-            seed * 1000003 + static_cast<std::uint64_t>(++camera_frames));
-        obs.marker = marker_detector.Detect(image, config.camera.camera);
-      }
-    }
+    const sim::SensorReadings readings =
+        sensors.Sense(scenario.world, robot, t, t - docker.docking_start_time(),
+                      camera_on || docker.phase() == docking::Phase::kVerify);
+    obs.scan = readings.scan;
+    obs.camera_frame = readings.camera_frame;
+    if (readings.image) obs.marker = marker_detector.Detect(*readings.image, config.camera.camera);
+    const bool have_scan = readings.scan != nullptr;
 
     const docking::Phase phase_before = docker.phase();
     const docking::Command cmd = docker.Step(obs);
@@ -250,6 +209,7 @@ DockingRun RunDocking(const sim::Scenario& scenario,
       const Pose2 T_world_odom = robot.T_world_base() * obs.T_odom_base.inverse();
       if (have_scan) {
         const Pose2 T_world_lidar = robot.T_world_base() * T_base_lidar;
+        const geometry::LaserScan& scan = *readings.scan;
         for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
           const double r = scan.ranges[i];
           if (!std::isfinite(r)) continue;

@@ -92,8 +92,8 @@ TEST(DockingSim, EachFailureIsReportedWithItsReason) {
   };
   for (const Case& c : cases) {
     RunConfig config;
-    config.blackout_start_s = c.blackout_s;
-    config.camera_blind = c.camera_blind;
+    config.sensors.blackout_start_s = c.blackout_s;
+    config.sensors.camera_blind = c.camera_blind;
     if (c.config != nullptr) config.docking = io::ReadDockingConfig(kRoot + "/" + c.config);
     const DockingRun run = RunDocking(f.Load(c.scenario), f.models, Method::kContinuous, 1, config);
     const std::string name = std::string(c.scenario) + " " + (c.config ? c.config : "") +
@@ -142,7 +142,7 @@ TEST(DockingSim, RandomStartsReachTheShelf) {
 TEST(DockingSim, TheBaselineFailsTheSameWayWithoutACode) {
   const Fixture f;
   RunConfig config;
-  config.camera_blind = true;
+  config.sensors.camera_blind = true;
   const DockingRun run = RunDocking(f.Load("config/scenarios/paper_docking.yaml"), f.models,
                                     Method::kStopAndRecognise, 2, config);
   EXPECT_EQ(run.outcome.code, OutcomeCode::kCodeNotFound) << run.outcome.reason;
