@@ -152,6 +152,7 @@ class Docker {
   void Start(const Observations& obs, Command* cmd);
   void PlanApproachFrom(const Observations& obs, Command* cmd);
   void StepApproach(const Observations& obs, double dt, Command* cmd);
+  bool ApproachStillClear(const Observations& obs) const;
   void StartDocking(const Observations& obs, Command* cmd);
   void StepDock(const Observations& obs, Command* cmd);
   void StepStand(const Observations& obs, Command* cmd);

@@ -113,12 +113,40 @@ void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
   }
 }
 
+bool Docker::ApproachStillClear(const Observations& obs) const {
+  // Each scan shows the obstacles near the way where they really stand (the map's presets may be
+  // a few decimetres off): the rest of the path, and the turn at the entry, must keep clear.
+  FreeSpace space = ApproachFreeSpace(task_, config_, obs);
+  const double margin = config_.safety.obstacle_margin_m;
+  const ApproachPlan& plan = approach_.plan;
+  if (approach_.step == ApproachState::Step::kFollow) {
+    const double s_now = follower_.path().Project(obs.T_map_base_estimate).s;
+    if (space.PathClearance(follower_.path(), config_.safety, 0.05, s_now) < margin) return false;
+  }
+  if (plan.kind == ApproachKind::kTurnDriveTurn &&
+      space.TurnClearance(plan.T_frame_entry, config_.safety) < margin) {
+    return false;
+  }
+  return true;
+}
+
 void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
   using Step = ApproachState::Step;
   const ApproachPlan& plan = approach_.plan;
   bool finished = false;
+  if (obs.scan != nullptr &&
+      (approach_.step == Step::kFollow || approach_.step == Step::kFirstTurn) &&
+      !ApproachStillClear(obs)) {
+    cmd->events.push_back("approach_blocked: the scan shows an obstacle on the way; re-planning");
+    approach_.step = Step::kPlan;
+  }
   switch (approach_.step) {
     case Step::kPlan:
+      // Plan from a standstill: the turns and the straight moves start from rest.
+      if (last_v_cmd_ != 0.0) {
+        cmd->velocity = BrakeCommand(dt);
+        return;
+      }
       PlanApproachFrom(obs, cmd);
       return;
     case Step::kMoveOut:

@@ -24,10 +24,10 @@ double FreeSpace::Clearance(const geometry::Pose2& T_frame_base, const SafetyCon
   return best;
 }
 
-double FreeSpace::PathClearance(const Path& path, const SafetyConfig& safety,
-                                double stride_m) const {
+double FreeSpace::PathClearance(const Path& path, const SafetyConfig& safety, double stride_m,
+                                double s_from_m) const {
   double best = std::numeric_limits<double>::infinity();
-  double next_s = 0.0;
+  double next_s = s_from_m;
   for (std::size_t i = 0; i < path.points.size(); ++i) {
     const bool last = i + 1 == path.points.size();
     if (path.points[i].s < next_s && !last) continue;

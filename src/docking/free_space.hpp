@@ -18,8 +18,10 @@ struct FreeSpace {
   bool empty() const { return obstacles.empty(); }
   /// Smallest distance from the footprint at `T_frame_base` to an obstacle (negative: overlap).
   double Clearance(const geometry::Pose2& T_frame_base, const SafetyConfig& safety) const;
-  /// Smallest clearance of the footprint swept along `path` (every `stride_m` and the goal).
-  double PathClearance(const Path& path, const SafetyConfig& safety, double stride_m = 0.05) const;
+  /// Smallest clearance of the footprint swept along `path` from arc length `s_from_m` (every
+  /// `stride_m` and the goal).
+  double PathClearance(const Path& path, const SafetyConfig& safety, double stride_m = 0.05,
+                       double s_from_m = 0.0) const;
   /// Smallest clearance of the circle the footprint sweeps when turning on the spot.
   double TurnClearance(const geometry::Pose2& T_frame_base, const SafetyConfig& safety) const;
 };

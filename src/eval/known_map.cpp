@@ -27,7 +27,7 @@ void AddOutline(const std::vector<Eigen::Vector2d>& points, bool closed, docking
 
 docking::FreeSpace KnownObstacles(const sim::Scenario& scenario,
                                   const std::vector<geometry::ShelfModel>& models,
-                                  std::uint64_t seed) {
+                                  std::uint64_t seed, bool shelf_outlines) {
   docking::FreeSpace map;
   const sim::World& world = scenario.world;
   for (const sim::Wall& wall : world.walls()) AddOutline(wall.points, wall.closed, &map);
@@ -46,8 +46,14 @@ docking::FreeSpace KnownObstacles(const sim::Scenario& scenario,
     const auto preset = scenario.PresetPose(shelf.id, seed);
     for (const geometry::ShelfModel& m : models) {
       if (m.name != shelf.model_name || !preset) continue;
-      for (const docking::LegDisc& leg : docking::LegDiscs(m, *preset))
+      for (const docking::LegDisc& leg : docking::LegDiscs(m, *preset)) {
         map.obstacles.push_back(leg);
+      }
+      if (shelf_outlines) {
+        std::vector<Eigen::Vector2d> corners;
+        for (const Eigen::Vector2d& c : m.LegCentres()) corners.push_back(*preset * c);
+        AddOutline(corners, true, &map);
+      }
     }
   }
   return map;

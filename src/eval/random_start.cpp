@@ -25,7 +25,7 @@ std::optional<geometry::Pose2> RandomStart(const sim::Scenario& scenario, std::u
   std::vector<geometry::ShelfModel> models;
   for (const sim::ShelfInstance& s : scenario.world.shelves()) models.push_back(s.model);
   truth.target_shelf_id = -1;
-  const docking::FreeSpace space = KnownObstacles(truth, models, seed);
+  const docking::FreeSpace space = KnownObstacles(truth, models, seed, /*shelf_outlines=*/false);
   docking::SafetyConfig footprint;
   footprint.robot_length_m = length_m;
   footprint.robot_width_m = width_m;
