@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "docking/path_planner.hpp"
 #include "geometry/angle.hpp"
@@ -67,7 +68,8 @@ std::string_view ToString(ApproachKind kind) {
 }
 
 ApproachPlan PlanApproach(const Pose2& T_frame_base, const Pose2& T_frame_goal, double max_entry_m,
-                          const FreeSpace& free_space, const DockingConfig& config) {
+                          const FreeSpace& free_space, const DockingConfig& config,
+                          bool allow_move_out) {
   const Checker check{free_space, config};
   ApproachPlan plan;
   const std::vector<double> entries = EntryCandidates(max_entry_m, config);
@@ -122,12 +124,24 @@ ApproachPlan PlanApproach(const Pose2& T_frame_base, const Pose2& T_frame_goal, 
       return {true, c.kind, c.d, entry, turned.yaw, {}, std::move(line), {}};
     }
   }
+  if (!allow_move_out) {
+    plan.reason = "no approach from here without moving out first";
+    return plan;
+  }
+  // A move out is worth it only when an approach exists from where it ends.
+  auto leads_somewhere = [&](const Pose2& to) {
+    return check.TurnClear(to) &&
+           PlanApproach(to, T_frame_goal, max_entry_m, free_space, config, false).ok;
+  };
   // Nothing from here: a straight move along the heading (forward or reversing, shorter first)
   // to a place where the robot can turn, as long as the move itself keeps the clearance it has.
   constexpr double kMoveStep_m = 0.1;
   const double max_move_m = config.max_move_out_m;
   const double now_clear = free_space.Clearance(T_frame_base, config.safety);
-  const double move_margin = std::min(check.margin(), now_clear - kMoveStep_m * 0.1);
+  // A move out starts close to something: it may lose a centimetre of the clearance it has,
+  // never touch.
+  constexpr double kMoveMayLose_m = 0.01;
+  const double move_margin = std::max(0.0, std::min(check.margin(), now_clear - kMoveMayLose_m));
   for (double s = kMoveStep_m; s <= max_move_m + 1e-9; s += kMoveStep_m) {
     for (double sign : {-1.0, 1.0}) {
       const Pose2 to = T_frame_base * Pose2(sign * s, 0.0, 0.0);
@@ -140,10 +154,38 @@ ApproachPlan PlanApproach(const Pose2& T_frame_base, const Pose2& T_frame_goal, 
           break;
         }
       }
-      if (!clear || !check.TurnClear(to)) continue;
+      if (!clear || !leads_somewhere(to)) continue;
       plan.ok = true;
       plan.kind = ApproachKind::kMoveOut;
       plan.T_frame_move_to = to;
+      plan.entry_distance_m = entries.front();
+      plan.T_frame_entry = entry_at(entries.front());
+      return plan;
+    }
+  }
+  // Still nothing (a wall alongside): a forward arc away from it to where a turn is free; the
+  // gentler arcs swing the tail less toward the wall.
+  for (double length = kMoveStep_m; length <= max_move_m + 1e-9; length += kMoveStep_m) {
+    for (const auto& [side, k] : {std::pair{-1.0, config.planner.max_curvature_1pm},
+                                  {1.0, config.planner.max_curvature_1pm},
+                                  {-1.0, 0.5 * config.planner.max_curvature_1pm},
+                                  {1.0, 0.5 * config.planner.max_curvature_1pm},
+                                  {-1.0, 0.25 * config.planner.max_curvature_1pm},
+                                  {1.0, 0.25 * config.planner.max_curvature_1pm}}) {
+      Path arc;
+      const int n = std::max(2, static_cast<int>(std::ceil(length / config.planner.sample_step_m)));
+      for (int i = 0; i <= n; ++i) {
+        const double s_m = length * i / n;
+        const double a = side * k * s_m;
+        const Pose2 local(std::sin(a) / (side * k), (1.0 - std::cos(a)) / (side * k), a);
+        arc.points.push_back({T_frame_base * local, s_m, side * k});
+      }
+      if (free_space.PathClearance(arc, config.safety) < move_margin) continue;
+      if (!leads_somewhere(arc.Goal())) continue;
+      plan.ok = true;
+      plan.kind = ApproachKind::kMoveOut;
+      plan.T_frame_move_to = arc.Goal();
+      plan.path = std::move(arc);
       plan.entry_distance_m = entries.front();
       plan.T_frame_entry = entry_at(entries.front());
       return plan;

@@ -36,9 +36,10 @@ struct ApproachPlan {
 /// Plans the approach from `T_frame_base` to the docking area in front of `T_frame_goal`, whose
 /// straight is at most `max_entry_m` long, keeping clear of `free_space` (which holds the target
 /// shelf's legs too) by safety.obstacle_margin_m. Shorter docking areas (down to
-/// min_entry_distance_m) are tried when the longest cannot be reached.
+/// min_entry_distance_m) are tried when the longest cannot be reached. A move out is planned
+/// (when `allow_move_out`) only toward a place from which an approach exists.
 ApproachPlan PlanApproach(const geometry::Pose2& T_frame_base, const geometry::Pose2& T_frame_goal,
                           double max_entry_m, const FreeSpace& free_space,
-                          const DockingConfig& config);
+                          const DockingConfig& config, bool allow_move_out = true);
 
 }  // namespace shelfdock::docking

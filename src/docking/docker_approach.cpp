@@ -107,7 +107,12 @@ void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
       approach_.step = ApproachState::Step::kFirstTurn;
       return;
     case ApproachKind::kMoveOut:
-      manoeuvre_.StartStraight(obs.T_odom_base, approach_.T_odom_map * plan.T_frame_move_to);
+      if (!plan.path.empty()) {  // an arc away from a wall alongside
+        follower_.SetPath(plan.path, config_.controller.max_speed_mps, 0.0, 0.0);
+        ++path_version_;
+      } else {
+        manoeuvre_.StartStraight(obs.T_odom_base, approach_.T_odom_map * plan.T_frame_move_to);
+      }
       approach_.step = ApproachState::Step::kMoveOut;
       return;
   }
@@ -150,7 +155,13 @@ void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
       PlanApproachFrom(obs, cmd);
       return;
     case Step::kMoveOut:
-      cmd->velocity = manoeuvre_.Update(obs.T_odom_base, dt, &finished);
+      if (plan.path.empty()) {
+        cmd->velocity = manoeuvre_.Update(obs.T_odom_base, dt, &finished);
+      } else {
+        const TrackingStatus s = follower_.Update(obs.T_map_base_estimate, dt);
+        cmd->velocity = s.command;
+        finished = s.reached || s.lost;
+      }
       if (finished) approach_.step = Step::kPlan;
       return;
     case Step::kFirstTurn: {
