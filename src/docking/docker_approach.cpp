@@ -82,6 +82,20 @@ void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
   const Pose2 T_map_goal = task_.T_map_shelf_preset * T_shelf_goal_;
   approach_.plan = PlanApproach(obs.T_map_base_estimate, T_map_goal,
                                 approach_.area->entry_distance_m, approach_.free_space, config_);
+  if (!approach_.plan.ok) {
+    // What the scan shows may be passing (a person): plan on the map alone, and let the live
+    // checks (the approach's re-planning, the docking stage's obstacle stop) deal with it.
+    FreeSpace map_only = task_.map_obstacles;
+    for (const LegDisc& leg : LegDiscs(task_.model, task_.T_map_shelf_preset)) {
+      map_only.obstacles.push_back(leg);
+    }
+    ApproachPlan on_map = PlanApproach(obs.T_map_base_estimate, T_map_goal,
+                                       approach_.area->entry_distance_m, map_only, config_);
+    if (on_map.ok) {
+      cmd->events.push_back("approach: planned on the map alone (" + approach_.plan.reason + ")");
+      approach_.plan = std::move(on_map);
+    }
+  }
   const ApproachPlan& plan = approach_.plan;
   if (!plan.ok) {
     Fail(OutcomeCode::kNoPath, plan.reason, cmd);
@@ -140,10 +154,37 @@ void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
   const ApproachPlan& plan = approach_.plan;
   bool finished = false;
   if (obs.scan != nullptr &&
-      (approach_.step == Step::kFollow || approach_.step == Step::kFirstTurn) &&
-      !ApproachStillClear(obs)) {
-    cmd->events.push_back("approach_blocked: the scan shows an obstacle on the way; re-planning");
-    approach_.step = Step::kPlan;
+      (approach_.step == Step::kFollow || approach_.step == Step::kFirstTurn)) {
+    const bool clear = ApproachStillClear(obs);
+    if (!clear && !approach_.replanned_for_block) {
+      // Most likely a neighbour standing off its map pose: plan again with what the scan shows.
+      cmd->events.push_back("approach_blocked: the scan shows an obstacle on the way; re-planning");
+      approach_.replanned_for_block = true;
+      approach_.step = Step::kPlan;
+    } else if (!clear && approach_.blocked_since_t < 0.0) {
+      cmd->events.push_back("approach_blocked: waiting for the way to clear");
+      approach_.blocked_since_t = obs.t_s;
+    } else if (clear && approach_.blocked_since_t >= 0.0) {
+      cmd->events.push_back("approach_clear");
+      approach_.blocked_since_t = -1.0;
+      if (approach_.step == Step::kFollow) {
+        follower_.SetPath(
+            follower_.path(), config_.controller.approach_speed_mps,
+            plan.kind == ApproachKind::kTurnDriveTurn ? 0.0 : config_.controller.max_speed_mps,
+            last_v_cmd_);
+      }
+    }
+  }
+  if (approach_.blocked_since_t >= 0.0 && approach_.step != Step::kPlan) {
+    if (obs.t_s - approach_.blocked_since_t > config_.safety.obstacle_wait_s) {
+      Fail(OutcomeCode::kWouldCollide,
+           "an obstacle blocked the approach for " + Fmt(obs.t_s - approach_.blocked_since_t, 1) +
+               " s",
+           cmd);
+      return;
+    }
+    cmd->velocity = BrakeCommand(dt);
+    return;
   }
   switch (approach_.step) {
     case Step::kPlan:

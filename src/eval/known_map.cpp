@@ -41,9 +41,17 @@ docking::FreeSpace KnownObstacles(const sim::Scenario& scenario,
   for (const sim::RoundPost& post : world.round_posts()) {
     map.obstacles.push_back({post.centre, post.radius_m});
   }
+  const auto target_preset = scenario.PresetPose(scenario.target_shelf_id, seed);
   for (const sim::ScenarioShelf& shelf : scenario.shelves) {
     if (shelf.id == scenario.target_shelf_id) continue;
     const auto preset = scenario.PresetPose(shelf.id, seed);
+    // A map holds one shelf per place: one standing where the target is said to be is not in it
+    // (the robot learns it is another shelf only from its code).
+    constexpr double kSamePlace_m = 0.5;
+    if (preset && target_preset &&
+        (preset->translation() - target_preset->translation()).norm() < kSamePlace_m) {
+      continue;
+    }
     for (const geometry::ShelfModel& m : models) {
       if (m.name != shelf.model_name || !preset) continue;
       for (const docking::LegDisc& leg : docking::LegDiscs(m, *preset)) {
