@@ -2,6 +2,7 @@
 // N seeded dockings with both methods on the same seeds, printed as one JSON summary.
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -9,9 +10,12 @@
 #include "commands.hpp"
 #include "eval/docking_runner.hpp"
 #include "eval/monte_carlo.hpp"
+#include "eval/random_start.hpp"
 #include "io/docking_config_yaml.hpp"
 #include "io/input_error.hpp"
+#include "io/lidar_config_yaml.hpp"
 #include "io/models_yaml.hpp"
+#include "io/robot_yaml.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_yaml.hpp"
 
@@ -22,7 +26,11 @@ struct DockOptions {
   std::string scenario = "config/scenarios/paper_docking.yaml";
   std::string models = "config/models.yaml";
   std::string config;
+  std::string lidar;
+  std::string robot;
   std::string method = "continuous";
+  int target = -1;
+  bool random_start = false;
   std::string record;
   std::uint64_t seed = 1;
   int runs = 100;
@@ -39,8 +47,10 @@ docking::Method ParseMethod(const std::string& text) {
 eval::RunConfig MakeRunConfig(const DockOptions& opt) {
   eval::RunConfig config;
   if (!opt.config.empty()) config.docking = io::ReadDockingConfig(opt.config);
-  config.blackout_start_s = opt.blackout_s;
-  config.camera_blind = opt.camera_blind;
+  if (!opt.lidar.empty()) config.lidar = io::ReadLidarConfig(opt.lidar);
+  if (!opt.robot.empty()) config.robot = io::ReadRobotConfig(opt.robot);
+  config.sensors.blackout_start_s = opt.blackout_s;
+  config.sensors.camera_blind = opt.camera_blind;
   return config;
 }
 
@@ -71,11 +81,39 @@ nlohmann::json SummaryJson(const eval::MethodSummary& s) {
           {"mean_adjustments", s.mean_adjustments}};
 }
 
+/// The scenario with --target applied (it must name one of its shelves).
+sim::Scenario LoadScenario(const DockOptions& opt,
+                           const std::vector<geometry::ShelfModel>& models) {
+  sim::Scenario scenario = io::ReadScenario(opt.scenario, models);
+  if (opt.target >= 0) {
+    if (scenario.FindShelf(opt.target) == nullptr) {
+      throw io::InputError("(command line)", "--target",
+                           "no shelf " + std::to_string(opt.target) + " in " + opt.scenario);
+    }
+    scenario.target_shelf_id = opt.target;
+  }
+  return scenario;
+}
+
+/// A random start for `seed` (--random-start), else the scenario's.
+std::optional<geometry::Pose2> StartFor(const DockOptions& opt, const sim::Scenario& scenario,
+                                        const eval::RunConfig& config, std::uint64_t seed) {
+  if (!opt.random_start) return std::nullopt;
+  const auto start = eval::RandomStart(scenario, seed, config.robot.footprint_length_m,
+                                       config.robot.footprint_width_m);
+  if (!start) {
+    throw io::InputError(opt.scenario, "shelves",
+                         "no free start 0.3-8 m from the target shelf for --random-start");
+  }
+  return start;
+}
+
 int RunDock(const DockOptions& opt) {
   const auto models = io::ReadShelfModels(opt.models);
-  const sim::Scenario scenario = io::ReadScenario(opt.scenario, models);
+  const sim::Scenario scenario = LoadScenario(opt, models);
   const docking::Method method = ParseMethod(opt.method);
   eval::RunConfig config = MakeRunConfig(opt);
+  config.T_map_robot_start = StartFor(opt, scenario, config, opt.seed);
   config.record = !opt.record.empty();
   const eval::DockingRun run = eval::RunDocking(scenario, models, method, opt.seed, config);
   if (!opt.record.empty()) {
@@ -90,24 +128,59 @@ int RunDock(const DockOptions& opt) {
 
 int RunEvalDocking(const DockOptions& opt) {
   const auto models = io::ReadShelfModels(opt.models);
-  const sim::Scenario scenario = io::ReadScenario(opt.scenario, models);
+  const sim::Scenario scenario = LoadScenario(opt, models);
   if (opt.runs < 1) throw io::InputError("(command line)", "--runs", "must be >= 1");
-  const eval::RunConfig config = MakeRunConfig(opt);
-  nlohmann::json out{{"scenario", scenario.name}, {"runs", opt.runs}, {"seed0", opt.seed}};
+  std::vector<docking::Method> methods{docking::Method::kContinuous,
+                                       docking::Method::kStopAndRecognise};
+  if (opt.method != "both") methods = {ParseMethod(opt.method)};
+  eval::RunConfig config = MakeRunConfig(opt);
+  nlohmann::json out{{"scenario", scenario.name},
+                     {"target_shelf", scenario.target_shelf_id},
+                     {"runs", opt.runs},
+                     {"seed0", opt.seed},
+                     {"random_start", opt.random_start}};
   double mean_time[2] = {0.0, 0.0};
-  int k = 0;
-  for (docking::Method method :
-       {docking::Method::kContinuous, docking::Method::kStopAndRecognise}) {
+  for (docking::Method method : methods) {
     std::vector<eval::DockingRun> runs;
+    nlohmann::json failures = nlohmann::json::array();
+    nlohmann::json touched = nlohmann::json::array();  // runs whose footprint met a true leg
     for (int i = 0; i < opt.runs; ++i) {
-      runs.push_back(eval::RunDocking(scenario, models, method, opt.seed + i, config));
+      const std::uint64_t seed = opt.seed + static_cast<std::uint64_t>(i);
+      config.T_map_robot_start = StartFor(opt, scenario, config, seed);
+      runs.push_back(eval::RunDocking(scenario, models, method, seed, config));
+      const eval::DockingRun& run = runs.back();
+      if (run.min_leg_clearance_m <= 0.0) {
+        touched.push_back({{"seed", seed}, {"min_leg_clearance_m", run.min_leg_clearance_m}});
+      }
+      if (!run.outcome.ok()) {
+        nlohmann::json f{{"seed", seed},
+                         {"result", docking::ToString(run.outcome.code)},
+                         {"reason", run.outcome.reason}};
+        if (config.T_map_robot_start) {
+          const geometry::Pose2& p = *config.T_map_robot_start;
+          f["start"] = {p.x, p.y, p.yaw};
+        }
+        failures.push_back(f);
+      }
     }
     const eval::MethodSummary s = eval::Summarise(runs);
-    mean_time[k++] = s.mean_time_s;
-    out[std::string(docking::ToString(method))] = SummaryJson(s);
+    mean_time[method == docking::Method::kContinuous ? 0 : 1] = s.mean_time_s;
+    nlohmann::json summary = SummaryJson(s);
+    summary["failures"] = failures;
+    summary["leg_contacts"] = touched;
+    out[std::string(docking::ToString(method))] = summary;
   }
-  out["continuous_time_saving"] = mean_time[1] > 0.0 ? 1.0 - mean_time[0] / mean_time[1] : 0.0;
-  out["perfect_knowledge_time_s"] = eval::PerfectKnowledgeTime(scenario, config);
+  if (mean_time[0] > 0.0 && mean_time[1] > 0.0) {
+    out["continuous_time_saving"] = 1.0 - mean_time[0] / mean_time[1];
+  }
+  if (!opt.random_start) {
+    config.T_map_robot_start.reset();
+    const double perfect_s = eval::PerfectKnowledgeTime(scenario, config);
+    out["perfect_knowledge_time_s"] = perfect_s;
+    if (mean_time[0] > 0.0 && perfect_s > 0.0) {
+      out["continuous_time_vs_perfect_knowledge"] = mean_time[0] / perfect_s;
+    }
+  }
   std::cout << out.dump(2) << "\n";
   return kExitOk;
 }
@@ -116,6 +189,11 @@ void AddCommonOptions(CLI::App* cmd, DockOptions* opt) {
   cmd->add_option("--scenario", opt->scenario, "scenario YAML")->capture_default_str();
   cmd->add_option("--models", opt->models, "shelf models YAML")->capture_default_str();
   cmd->add_option("--config", opt->config, "docking config YAML (e.g. config/docking.yaml)");
+  cmd->add_option("--lidar", opt->lidar, "LiDAR config YAML (default: the WLR-716's defaults)");
+  cmd->add_option("--robot", opt->robot, "robot config YAML (default: config/robot.yaml's values)");
+  cmd->add_option("--target", opt->target, "dock under this shelf id instead of the scenario's");
+  cmd->add_flag("--random-start", opt->random_start,
+                "start anywhere in free space 0.3-8 m from the shelf, any heading (per seed)");
   cmd->add_option("--lidar-blackout", opt->blackout_s,
                   "failure injection: no scans from this many seconds after the entry");
   cmd->add_flag("--camera-blind", opt->camera_blind,
@@ -139,6 +217,9 @@ void AddDockCommands(CLI::App& app, int* exit_code) {
       "eval-docking", "N seeded dockings, both methods on the same seeds: percentiles and times");
   AddCommonOptions(ev, eopt.get());
   ev->add_option("--runs", eopt->runs, "dockings per method")->capture_default_str();
+  eopt->method = "both";
+  ev->add_option("--method", eopt->method, "both | continuous | stop-and-recognise")
+      ->capture_default_str();
   ev->add_option("--seed0", eopt->seed, "first seed")->capture_default_str();
   ev->callback([eopt, exit_code] { *exit_code = RunEvalDocking(*eopt); });
 }

@@ -14,28 +14,30 @@ void Docker::StepStand(const Observations& obs, Command* cmd) {
   const bool settled = obs.t_s - phase_start_t_ >= config_.baseline.settle_s;
   if (obs.scan != nullptr) {
     if (!settled) {
-      last_scan_t_ = obs.t_s;
+      dock_.last_scan_t = obs.t_s;
       return;
     }
     ProcessScan(obs, true, cmd);
-    ++standing_scans_;
-  } else if (obs.t_s - last_scan_t_ > config_.scan_timeout_s) {
+    ++stand_.scans;
+  } else if (obs.t_s - dock_.last_scan_t > config_.scan_timeout_s) {
     Fail(OutcomeCode::kDetectionLost,
-         "no LiDAR scan for " + Fmt(obs.t_s - last_scan_t_, 2) + " s while parked", cmd);
+         "no LiDAR scan for " + Fmt(obs.t_s - dock_.last_scan_t, 2) + " s while parked", cmd);
     return;
   }
-  if (standing_scans_ < config_.baseline.standing_scans) return;
+  if (stand_.scans < config_.baseline.standing_scans) return;
   if (!tracker_.has_detection()) {
     Fail(OutcomeCode::kShelfNotFound,
-         "no shelf recognised in " + std::to_string(standing_scans_) + " scans at the parking spot",
+         "no shelf recognised in " + std::to_string(stand_.scans) + " scans at the parking spot",
          cmd);
     return;
   }
-  goal_is_parking_ = false;
-  lidar_in_use_ = false;
+  dock_.goal_is_parking = false;
+  dock_.lidar_in_use = false;
   phase_ = Phase::kDock;
-  if (Replan(obs.T_odom_base, GoalFromShelf(tracker_.estimate()), cmd) != PlanStatus::kOk) {
-    Fail(OutcomeCode::kWouldCollide, "no safe path from the parking spot: " + replan_failure_, cmd);
+  const PlanStatus status = Replan(obs.T_odom_base, GoalFromShelf(tracker_.estimate()), cmd);
+  if (status != PlanStatus::kOk) {
+    Fail(status == PlanStatus::kCollides ? OutcomeCode::kWouldCollide : OutcomeCode::kNoPath,
+         "no path from the parking spot: " + dock_.replan_failure, cmd);
   }
 }
 

@@ -3,6 +3,7 @@
 #include "docking/docker.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "docking/collision_check.hpp"
 #include "docking/path_planner.hpp"
@@ -21,17 +22,30 @@ void Docker::StartDocking(const Observations& obs, Command* cmd) {
   cmd->events.push_back("docking_area_entered: " + std::string(ToString(method_)));
   T_odom_map_ = obs.T_odom_base * obs.T_map_base_estimate.inverse();
   tracker_.SetPrior(T_odom_map_ * task_.T_map_shelf_preset);
-  lidar_in_use_ = method_ == Method::kContinuous;
-  last_detection_t_ = obs.t_s;
-  last_scan_t_ = obs.t_s;
+  dock_.T_odom_shelf_preset = T_odom_map_ * task_.T_map_shelf_preset;
+  dock_.lidar_in_use = method_ == Method::kContinuous;
+  dock_.last_detection_t = obs.t_s;
+  dock_.last_scan_t = obs.t_s;
   Pose2 target = GoalFromShelf(tracker_.estimate());
   if (method_ == Method::kStopAndRecognise) {
-    goal_is_parking_ = true;
+    dock_.goal_is_parking = true;
     target = target * Pose2(-config_.baseline.parking_distance_m, 0.0, 0.0);
   }
-  if (Replan(obs.T_odom_base, target, cmd) != PlanStatus::kOk) {
-    Fail(OutcomeCode::kWouldCollide, "no safe path into the docking area: " + replan_failure_, cmd);
+  const PlanStatus status = Replan(obs.T_odom_base, target, cmd);
+  if (status != PlanStatus::kOk) {
+    Fail(status == PlanStatus::kCollides ? OutcomeCode::kWouldCollide : OutcomeCode::kNoPath,
+         "no path into the docking area: " + dock_.replan_failure, cmd);
+    return;
   }
+  dock_.first_goal = T_odom_goal_;
+}
+
+bool Docker::ReplanJustified() const {
+  if (!dock_.first_goal) return true;
+  const Pose2 moved = dock_.first_goal->inverse() * T_odom_goal_;
+  const double explained = std::hypot(moved.x, moved.y) / config_.replan_xy_m +
+                           std::abs(moved.yaw) / config_.replan_yaw_rad;
+  return dock_.replans < config_.max_replans + static_cast<int>(explained);
 }
 
 bool Docker::LidarStillUseful(const Pose2& T_odom_base) const {
@@ -48,7 +62,7 @@ bool Docker::LidarStillUseful(const Pose2& T_odom_base) const {
 }
 
 void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) {
-  last_scan_t_ = obs.t_s;
+  dock_.last_scan_t = obs.t_s;
   const geometry::LaserScan& scan = *obs.scan;
   const std::vector<perception::ScanPoint> points =
       CompensatedPoints(scan, odometry_, config_.T_base_lidar, obs.t_s);
@@ -63,11 +77,11 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
     const double s_blocked =
         FirstBlockedArcLength(follower_.path(), s_now, p_odom,
                               LegDiscs(task_.model, tracker_.estimate()), config_.safety);
-    if (s_blocked >= 0.0 && blocked_since_t_ < 0.0) {
-      blocked_since_t_ = obs.t_s;
+    if (s_blocked >= 0.0 && dock_.blocked_since_t < 0.0) {
+      dock_.blocked_since_t = obs.t_s;
       cmd->events.push_back("path_blocked: obstacle " + Fmt(s_blocked - s_now, 2) + " m ahead");
-    } else if (s_blocked < 0.0 && blocked_since_t_ >= 0.0) {
-      blocked_since_t_ = -1.0;
+    } else if (s_blocked < 0.0 && dock_.blocked_since_t >= 0.0) {
+      dock_.blocked_since_t = -1.0;
       follower_.SetPath(follower_.path(), config_.controller.max_speed_mps, 0.0, last_v_cmd_);
       cmd->events.push_back("path_clear");
     }
@@ -78,11 +92,31 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
   const perception::DetectionResult result =
       detect_(points, scan.angle_increment, std::optional<Pose2>(T_lidar_preset));
   if (result.detections.empty()) return;
-  const perception::Detection& det = result.detections.front();
-  if (!task_.model.name.empty() && det.model != task_.model.name) {
-    cmd->events.push_back("detection_ignored: model " + det.model);
+  // The detection of this shelf: the right model, where the preset allows it to be (a neighbour
+  // in an aisle is farther than that), nearest the fused estimate.
+  const perception::Detection* chosen = nullptr;
+  double chosen_m = 0.0;
+  for (const perception::Detection& d : result.detections) {
+    if (!task_.model.name.empty() && d.model != task_.model.name) continue;
+    const Pose2 T_odom_d = T_odom_lidar * d.T_lidar_shelf;
+    const double from_preset_m =
+        (T_odom_d.translation() - dock_.T_odom_shelf_preset.translation()).norm();
+    if (from_preset_m > config_.tracker.preset_gate_sigmas * config_.tracker.preset_sigma_xy_m) {
+      continue;
+    }
+    const double from_estimate_m =
+        (T_odom_d.translation() - tracker_.estimate().translation()).norm();
+    if (chosen == nullptr || from_estimate_m < chosen_m) {
+      chosen = &d;
+      chosen_m = from_estimate_m;
+    }
+  }
+  if (chosen == nullptr) {
+    cmd->events.push_back("detection_ignored: model " + result.detections.front().model +
+                          " or too far from the preset");
     return;
   }
+  const perception::Detection& det = *chosen;
   const Pose2 T_odom_shelf = T_odom_lidar * det.T_lidar_shelf;
   Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
   J.topLeftCorner<2, 2>() = T_odom_lidar.rotation();
@@ -91,11 +125,11 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
     cmd->events.push_back("detection_rejected: jump from the fused estimate");
     return;
   }
-  last_detection_ = T_odom_shelf;
-  last_detection_t_ = obs.t_s;
+  dock_.last_detection = T_odom_shelf;
+  dock_.last_detection_t = obs.t_s;
   cmd->events.push_back("detection: " + det.model + " legs " + std::to_string(det.legs_used) +
                         (update == TrackUpdate::kReinitialised ? " (track restarted)" : ""));
-  if (goal_is_parking_) return;
+  if (dock_.goal_is_parking) return;
 
   // Paper 3.5: compare each recognition with the current path's end; re-plan beyond a threshold.
   const Pose2 goal = GoalFromShelf(tracker_.estimate());
@@ -104,22 +138,24 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
       std::abs(diff.yaw) <= config_.replan_yaw_rad) {
     return;
   }
-  if (replans_ >= config_.max_replans) {
+  if (!ReplanJustified()) {
     Fail(OutcomeCode::kTooManyReplans,
-         "the goal kept moving: " + std::to_string(replans_) + " re-plans", cmd);
+         "the goal kept moving back and forth: " + std::to_string(dock_.replans) +
+             " re-plans, more than its net movement explains",
+         cmd);
     return;
   }
-  ++replans_;
+  ++dock_.replans;
   const PlanStatus status = Replan(obs.T_odom_base, goal, cmd);
   if (status == PlanStatus::kCollides) {
-    Fail(OutcomeCode::kWouldCollide, replan_failure_, cmd);
+    Fail(OutcomeCode::kWouldCollide, dock_.replan_failure, cmd);
   } else if (status == PlanStatus::kInfeasible) {
     // Keep the current path unless it would now touch a leg.
     const ClearanceResult c = CheckPathAgainstLegs(
         follower_.path(), LegDiscs(task_.model, tracker_.estimate()), config_.safety);
     if (!c.ok) {
       Fail(OutcomeCode::kWouldCollide,
-           "cannot re-plan (" + replan_failure_ + ") and the current path passes " +
+           "cannot re-plan (" + dock_.replan_failure + ") and the current path passes " +
                Fmt(c.min_clearance_m) + " m from a leg",
            cmd);
     }
@@ -129,39 +165,40 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
 void Docker::StepDock(const Observations& obs, Command* cmd) {
   const double dt = std::max(obs.t_s - last_t_, 1e-4);
   if (obs.scan != nullptr) {
-    ProcessScan(obs, lidar_in_use_, cmd);
+    ProcessScan(obs, dock_.lidar_in_use, cmd);
     if (phase_ != Phase::kDock) return;
   }
-  if (lidar_in_use_ && obs.t_s - last_scan_t_ > config_.scan_timeout_s) {
+  if (dock_.lidar_in_use && obs.t_s - dock_.last_scan_t > config_.scan_timeout_s) {
     Fail(OutcomeCode::kDetectionLost,
-         "no LiDAR scan for " + Fmt(obs.t_s - last_scan_t_, 2) + " s while docking", cmd);
+         "no LiDAR scan for " + Fmt(obs.t_s - dock_.last_scan_t, 2) + " s while docking", cmd);
     return;
   }
-  if (lidar_in_use_ && tracker_.has_detection() &&
-      obs.t_s - last_detection_t_ > config_.detection_lost_s) {
+  if (dock_.lidar_in_use && tracker_.has_detection() &&
+      obs.t_s - dock_.last_detection_t > config_.detection_lost_s) {
     Fail(OutcomeCode::kDetectionLost,
-         "the shelf was not recognised for " + Fmt(obs.t_s - last_detection_t_, 2) +
+         "the shelf was not recognised for " + Fmt(obs.t_s - dock_.last_detection_t, 2) +
              " s while it was still needed",
          cmd);
     return;
   }
-  if (blocked_since_t_ >= 0.0) {
-    if (obs.t_s - blocked_since_t_ > config_.safety.obstacle_wait_s) {
+  if (dock_.blocked_since_t >= 0.0) {
+    if (obs.t_s - dock_.blocked_since_t > config_.safety.obstacle_wait_s) {
       Fail(OutcomeCode::kWouldCollide,
-           "an obstacle blocked the path for " + Fmt(obs.t_s - blocked_since_t_, 1) + " s", cmd);
+           "an obstacle blocked the path for " + Fmt(obs.t_s - dock_.blocked_since_t, 1) + " s",
+           cmd);
       return;
     }
-    const double v = std::max(0.0, last_v_cmd_ - 1.5 * config_.controller.max_decel_mps2 * dt);
-    cmd->velocity = {v, 0.0};
+    cmd->velocity = BrakeCommand(dt);
     return;
   }
-  if (obs.camera_frame && !goal_is_parking_ && !lidar_in_use_ && config_.camera_guide.enabled) {
+  if (obs.camera_frame && !dock_.goal_is_parking && !dock_.lidar_in_use &&
+      config_.camera_guide.enabled) {
     GuideByCode(obs, cmd);
     if (phase_ != Phase::kDock) return;
   }
   const TrackingStatus status = follower_.Update(obs.T_odom_base, dt);
-  if (lidar_in_use_ && !tracker_.has_detection() && status.remaining_m < config_.must_detect_by_m &&
-      !goal_is_parking_) {
+  if (dock_.lidar_in_use && !tracker_.has_detection() &&
+      status.remaining_m < config_.must_detect_by_m && !dock_.goal_is_parking) {
     Fail(OutcomeCode::kShelfNotFound,
          "no shelf recognised within " + Fmt(obs.t_s - docking_start_t_, 1) +
              " s of entering the docking area",
@@ -169,35 +206,32 @@ void Docker::StepDock(const Observations& obs, Command* cmd) {
     return;
   }
   if (status.lost) {
-    Fail(OutcomeCode::kWouldCollide,
+    Fail(OutcomeCode::kTrackingFailed,
          "the robot left the planned path by " + Fmt(status.cross_track_m) + " m", cmd);
     return;
   }
-  if (lidar_in_use_ && tracker_.has_detection() &&
+  if (dock_.lidar_in_use && tracker_.has_detection() &&
       (status.remaining_m < config_.lidar_cutoff_m || !LidarStillUseful(obs.T_odom_base))) {
-    lidar_in_use_ = false;
+    dock_.lidar_in_use = false;
     cmd->events.push_back("lidar_off: legs too close to recognise, " + Fmt(status.remaining_m, 2) +
                           " m to go on odometry");
   }
   if (status.reached) {
     cmd->velocity = {};
     phase_start_t_ = obs.t_s;
-    if (goal_is_parking_) {
+    if (dock_.goal_is_parking) {
       phase_ = Phase::kStand;
-      standing_scans_ = 0;
-      last_scan_t_ = obs.t_s;
+      stand_.scans = 0;
+      dock_.last_scan_t = obs.t_s;
       cmd->events.push_back("parked: recognising while standing");
     } else if (!StartAdjustFromGuide(obs, cmd)) {
-      phase_ = Phase::kVerify;
-      code_readings_.clear();
-      missing_frames_ = 0;
-      cmd->camera_on = true;
+      StartVerify(obs.t_s, cmd);
       cmd->events.push_back("goal_reached: checking the code");
     }
     return;
   }
   cmd->velocity = status.command;
-  cmd->camera_on = !goal_is_parking_ && config_.camera_guide.enabled &&
+  cmd->camera_on = !dock_.goal_is_parking && config_.camera_guide.enabled &&
                    status.remaining_m < config_.camera_guide.camera_on_m;
 }
 

@@ -18,11 +18,23 @@ using geometry::Pose2;
 Pose2 Docker::TagGoal(const Pose2& T_tag_base) const {
   // The code is at the shelf centre along its long side; the goal is T_shelf_goal_ up to the
   // code's own pi (which end the robot came from).
-  Pose2 T_tag_goal = T_shelf_goal_;
-  if (std::abs(geometry::AngleDiff(T_tag_base.yaw, T_tag_goal.yaw)) > 0.5 * std::numbers::pi) {
-    T_tag_goal = T_tag_goal * Pose2(0.0, 0.0, std::numbers::pi);
-  }
-  return T_tag_goal;
+  return GoalBranchNearHeading(T_shelf_goal_, T_tag_base.yaw);
+}
+
+void Docker::StartLift(double t_s, Command* cmd) {
+  phase_ = Phase::kLift;
+  phase_start_t_ = t_s;
+  cmd->start_lift = true;
+  cmd->events.push_back("lift_started");
+}
+
+void Docker::StartVerify(double t_s, Command* cmd) {
+  verify_.lift_after_adjust = false;
+  phase_ = Phase::kVerify;
+  phase_start_t_ = t_s;
+  verify_.readings.clear();
+  verify_.missing_frames = 0;
+  cmd->camera_on = true;
 }
 
 void Docker::GuideByCode(const Observations& obs, Command* cmd) {
@@ -30,9 +42,9 @@ void Docker::GuideByCode(const Observations& obs, Command* cmd) {
   if (!obs.marker || obs.marker->id != task_.shelf_id) return;  // the check at the goal reports
   // The camera sits at the base origin: the code's pose in odom from this frame's odometry.
   // Averaging over frames taken along the last decimetres (odometry drift there is sub-mm).
-  guide_tags_.push_back(obs.T_odom_base * obs.marker->T_camera_tag);
-  if (static_cast<int>(guide_tags_.size()) < g.frames) return;
-  const Pose2 T_odom_tag = MeanPose(guide_tags_);
+  guide_.tags.push_back(obs.T_odom_base * obs.marker->T_camera_tag);
+  if (static_cast<int>(guide_.tags.size()) < g.frames) return;
+  const Pose2 T_odom_tag = MeanPose(guide_.tags);
   const Pose2 goal = T_odom_tag * TagGoal(T_odom_tag.inverse() * obs.T_odom_base);
   const double remaining_m = -(T_odom_goal_.inverse() * obs.T_odom_base).x;
   if (remaining_m < g.min_remaining_m) return;
@@ -46,32 +58,53 @@ void Docker::GuideByCode(const Observations& obs, Command* cmd) {
   planner.max_curvature_1pm = g.max_curvature_1pm;
   const Pose2 lidar_goal = T_odom_goal_;
   if (Replan(obs.T_odom_base, goal, cmd, &planner) != PlanStatus::kOk) return;
-  if (!lidar_goal_before_camera_) lidar_goal_before_camera_ = lidar_goal;
-  ++camera_corrections_;
+  if (!guide_.lidar_goal_before_camera) guide_.lidar_goal_before_camera = lidar_goal;
+  ++guide_.corrections;
   cmd->events.push_back("camera_guide: goal moved " + Fmt(diff.x, 4) + "," + Fmt(diff.y, 4) + "," +
-                        Fmt(diff.yaw, 4) + " from " + std::to_string(guide_tags_.size()) +
+                        Fmt(diff.yaw, 4) + " from " + std::to_string(guide_.tags.size()) +
                         " code readings, " + Fmt(remaining_m, 3) + " m to go");
 }
 
 bool Docker::StartAdjustFromGuide(const Observations& obs, Command* cmd) {
-  if (guide_tags_.empty() || adjust_tries_ >= config_.verify.max_adjust_tries) return false;
+  if (guide_.tags.empty() || verify_.adjust_tries >= config_.verify.max_adjust_tries) return false;
   // The code seen on the way in (paper 3.5: the camera "in advance") already tells where the goal
   // is; odometry over the last centimetres carries it to the stop. Beyond the tolerance, adjust
   // at once instead of first standing for a check; the check after the adjustment verifies.
-  const Pose2 T_odom_tag = MeanPose(guide_tags_);
+  const Pose2 T_odom_tag = MeanPose(guide_.tags);
   const Pose2 T_odom_goal = T_odom_tag * TagGoal(T_odom_tag.inverse() * obs.T_odom_base);
   const Pose2 offset = T_odom_goal.inverse() * obs.T_odom_base;
   const VerifyConfig& v = config_.verify;
   const bool xy_ok =
       std::abs(offset.x) <= v.tolerance_xy_m && std::abs(offset.y) <= v.tolerance_xy_m;
-  if (xy_ok && std::abs(offset.yaw) <= v.tolerance_yaw_rad) return false;
+  if (xy_ok && std::abs(offset.yaw) <= v.tolerance_yaw_rad) {
+    if (!v.check_on_the_way_in || static_cast<int>(guide_.tags.size()) < v.frames) return false;
+    // The readings taken on the way in are the check: standing still for more frames of the
+    // same code would only cost time.
+    ++verify_.code_checks;
+    verify_.code_offset = offset;
+    cmd->events.push_back("code_check: on the way in, " + std::to_string(guide_.tags.size()) +
+                          " readings, offset " + Fmt(offset.x, 4) + "," + Fmt(offset.y, 4) + "," +
+                          Fmt(offset.yaw, 4));
+    phase_ = Phase::kLift;
+    phase_start_t_ = obs.t_s;
+    cmd->start_lift = true;
+    cmd->events.push_back("lift_started");
+    return true;
+  }
   if (std::hypot(offset.x, offset.y) > v.max_correction_m) return false;  // the check decides
-  ++adjust_tries_;
-  // Within the position tolerance only the heading is corrected (a turn in place).
+  ++verify_.adjust_tries;
+  // Within the position tolerance only the heading is corrected (a turn in place): the readings
+  // on the way in were the check, and a turn of a few milliradians on odometry needs no other.
+  verify_.lift_after_adjust =
+      xy_ok && v.check_on_the_way_in && static_cast<int>(guide_.tags.size()) >= v.frames;
+  if (verify_.lift_after_adjust) {
+    ++verify_.code_checks;
+    verify_.code_offset = offset;
+  }
   adjust_.Start(obs.T_odom_base,
                 xy_ok ? obs.T_odom_base * Pose2(0.0, 0.0, -offset.yaw) : T_odom_goal);
   phase_ = Phase::kAdjust;
-  cmd->events.push_back("adjust: try " + std::to_string(adjust_tries_) +
+  cmd->events.push_back("adjust: try " + std::to_string(verify_.adjust_tries) +
                         " from the code seen on the way in, offset " + Fmt(offset.x, 4) + "," +
                         Fmt(offset.y, 4) + "," + Fmt(offset.yaw, 4));
   return true;
@@ -82,9 +115,10 @@ void Docker::StepVerify(const Observations& obs, Command* cmd) {
   cmd->camera_on = true;
   if (!obs.camera_frame) return;
   if (!obs.marker) {
-    if (++missing_frames_ > config_.verify.max_missing_frames) {
+    if (++verify_.missing_frames > config_.verify.max_missing_frames) {
       Fail(OutcomeCode::kCodeNotFound,
-           "no code seen under the shelf in " + std::to_string(missing_frames_) + " frames", cmd);
+           "no code seen under the shelf in " + std::to_string(verify_.missing_frames) + " frames",
+           cmd);
     }
     return;
   }
@@ -95,21 +129,22 @@ void Docker::StepVerify(const Observations& obs, Command* cmd) {
          cmd);
     return;
   }
-  code_readings_.push_back(obs.marker->T_camera_tag);  // camera at the base origin
-  if (static_cast<int>(code_readings_.size()) < config_.verify.frames) return;
+  verify_.readings.push_back(obs.marker->T_camera_tag);  // camera at the base origin
+  if (static_cast<int>(verify_.readings.size()) < config_.verify.frames) return;
 
-  const Pose2 T_tag_base = MeanPose(code_readings_).inverse();
-  code_readings_.clear();
+  const Pose2 T_tag_base = MeanPose(verify_.readings).inverse();
+  ++verify_.code_checks;
+  verify_.readings.clear();
   const Pose2 T_tag_goal = TagGoal(T_tag_base);
   const Pose2 offset = T_tag_goal.inverse() * T_tag_base;
-  code_offset_ = offset;
+  verify_.code_offset = offset;
   cmd->events.push_back("code_check: offset " + Fmt(offset.x, 4) + "," + Fmt(offset.y, 4) + "," +
                         Fmt(offset.yaw, 4));
   const double xy = std::hypot(offset.x, offset.y);
   const bool within = std::abs(offset.x) <= config_.verify.tolerance_xy_m &&
                       std::abs(offset.y) <= config_.verify.tolerance_xy_m &&
                       std::abs(offset.yaw) <= config_.verify.tolerance_yaw_rad;
-  if (within || adjust_tries_ >= config_.verify.max_adjust_tries) {
+  if (within || verify_.adjust_tries >= config_.verify.max_adjust_tries) {
     if (!within) cmd->events.push_back("adjust_exhausted: lifting with the offset above");
     phase_ = Phase::kLift;
     phase_start_t_ = obs.t_s;
@@ -123,11 +158,11 @@ void Docker::StepVerify(const Observations& obs, Command* cmd) {
          cmd);
     return;
   }
-  ++adjust_tries_;
+  ++verify_.adjust_tries;
   adjust_.Start(obs.T_odom_base, obs.T_odom_base * offset.inverse());
   phase_ = Phase::kAdjust;
   cmd->camera_on = false;
-  cmd->events.push_back("adjust: try " + std::to_string(adjust_tries_));
+  cmd->events.push_back("adjust: try " + std::to_string(verify_.adjust_tries));
 }
 
 }  // namespace shelfdock::docking

@@ -27,6 +27,8 @@ struct ControllerConfig {
   double creep_speed_mps = 0.015;       ///< [m/s] slowest speed before the final stop
   double goal_tolerance_m = 0.0005;     ///< [m] stop when this close along the path
   double max_cross_track_m = 0.25;      ///< [m] farther off the path is a tracking failure
+  double heading_priority_m = 0.02;     ///< [m] before a stop: steer the heading only
+  double heading_settle_m = 0.004;      ///< [m] distance scale of that heading correction
 };
 
 /// Fusion of detections over time (shelf_tracker.hpp).
@@ -34,19 +36,25 @@ struct ShelfTrackerConfig {
   double gate_xy_m = 0.12;              ///< [m] reject detections jumping farther from the estimate
   double gate_yaw_rad = 0.12;           ///< [rad]
   int reinit_after_rejects = 6;         ///< consecutive rejections that restart the estimate
-  double min_sigma_xy_m = 0.004;        ///< [m] floor of a detection's std dev
-  double min_sigma_yaw_rad = 0.006;     ///< [rad]
+  double min_sigma_xy_m = 0.002;        ///< [m] floor of a detection's std dev
+  double min_sigma_yaw_rad = 0.003;     ///< [rad]
   double drift_sigma_xy_per_m = 0.004;  ///< [m/sqrt(m)] growth of odometry error per metre
   double drift_sigma_yaw_per_m = 0.003;  ///< [rad/sqrt(m)]
   double preset_sigma_xy_m = 0.3;        ///< [m] prior std dev of the preset pose
   double preset_sigma_yaw_rad = 0.2;     ///< [rad]
+  /// Detections farther from the preset than this many preset_sigma_xy_m are another shelf
+  /// (a neighbour in an aisle), never this one, and are not fused.
+  double preset_gate_sigmas = 3.0;
 };
 
 /// Footprint and clearance checks (collision_check.hpp).
 struct SafetyConfig {
-  double robot_length_m = 0.62;       ///< [m] footprint along the robot's x
-  double robot_width_m = 0.52;        ///< [m] footprint along the robot's y
-  double robot_offset_x_m = 0.0;      ///< [m] footprint centre ahead of the base origin
+  // The robot's footprint is the robot's, not a docking setting: whoever builds the Docker copies
+  // it from the robot description (config/robot.yaml, sim::DiffDriveConfig, whose defaults these
+  // repeat for a Docker built without one); the docking YAML does not set it.
+  double robot_length_m = 0.70;       ///< [m] footprint along the robot's x (from --robot)
+  double robot_width_m = 0.50;        ///< [m] footprint along the robot's y (from --robot)
+  double robot_offset_x_m = 0.0;      ///< [m] footprint centre ahead of the base (robot's)
   double leg_margin_m = 0.05;         ///< [m] required clearance to every leg
   double obstacle_margin_m = 0.05;    ///< [m] clearance to unknown scan points
   double obstacle_lookahead_m = 1.2;  ///< [m] path length checked for obstacles
@@ -70,6 +78,9 @@ struct VerifyConfig {
   double adjust_yaw_rate_radps = 0.5;    ///< [rad/s]
   double adjust_yaw_accel_radps2 = 1.8;  ///< [rad/s^2] braking of each rotation
   double max_correction_m = 0.05;        ///< [m] larger offsets are not corrected blind
+  /// Lift without a standing check when at least `frames` code readings taken on the way in put
+  /// the stop within the tolerance (odometry carries them over the last centimetres).
+  bool check_on_the_way_in = true;
 };
 
 /// The upward camera used in advance (paper 3.5: "When approaching the recognizing position, we
@@ -105,10 +116,20 @@ struct DockingConfig {
   BaselineConfig baseline;
 
   geometry::Pose2 T_base_lidar{0.30, 0.0, 0.0};  ///< LiDAR mounting (nominal)
-  double dock_yaw_offset_rad = 0.0;  ///< robot heading at the goal vs the shelf's long side
-  double entry_distance_m = 4.5;     ///< [m] docking area starts this far from the preset goal
-  double replan_xy_m = 0.004;        ///< [m] goal change that triggers a re-plan
-  double replan_yaw_rad = 0.004;     ///< [rad]
+  double dock_yaw_offset_rad = 0.0;   ///< robot heading at the goal vs the shelf's long side
+  double entry_distance_m = 4.5;      ///< [m] longest docking area: starts this far from the goal
+  double min_entry_distance_m = 1.5;  ///< [m] shortest docking area the free space may leave
+  double entry_tolerance_m = 0.05;    ///< [m] this near the entry counts as inside the area
+  double area_half_width_m = 0.5;     ///< [m] the area is a corridor this wide each side
+  double area_max_heading_rad = 0.8;  ///< [rad] inside it the robot may dock from this heading
+  double turn_penalty_m = 0.75;       ///< [m] of straight a turn on the spot is worth giving up
+  double max_move_out_m = 1.0;        ///< [m] longest straight move to get free room to turn
+  int max_approach_plans = 8;         ///< approach plans (the first and after each move out)
+  double replan_xy_m = 0.004;         ///< [m] goal change that triggers a re-plan
+  double replan_yaw_rad = 0.004;      ///< [rad]
+  /// Re-plans allowed beyond those the goal's real movement explains: each re-plan must follow
+  /// a goal change of replan_xy_m / replan_yaw_rad, so the net change of the goal since the
+  /// first plan, in those units, bounds the useful ones; more means the goal oscillates.
   int max_replans = 40;
   double lidar_cutoff_m = 0.45;      ///< [m] remaining path below which the LiDAR is not used
   double leg_min_range_m = 0.15;     ///< [m] legs nearer the LiDAR than this are not trusted
@@ -119,6 +140,8 @@ struct DockingConfig {
   double lift_timeout_s = 10.0;      ///< [s]
   double timeout_s = 90.0;           ///< [s] whole attempt
   double control_period_s = 0.02;    ///< [s] expected Step period (used for stopping)
+  double abort_decel_factor = 1.5;   ///< abort and obstacle stops brake this much harder than
+                                     ///< the docking profile (max_decel_mps2), within the robot
 };
 
 /// Empty when valid, else "key: requirement" for the first bad value.

@@ -55,6 +55,17 @@ void FineAdjust::Start(const geometry::Pose2& T_odom_base, const geometry::Pose2
   moves_.push_back({Kind::kRotateTo, T_odom_goal, 0.0});
 }
 
+void FineAdjust::StartTurn(double yaw_rad) {
+  moves_.clear();
+  moves_.push_back({Kind::kRotateTo, geometry::Pose2(0.0, 0.0, yaw_rad), 0.0});
+}
+
+void FineAdjust::StartStraight(const geometry::Pose2& T_odom_base,
+                               const geometry::Pose2& T_odom_to) {
+  moves_.clear();
+  AddStraight(T_odom_base, T_odom_to);
+}
+
 VelocityCommand FineAdjust::Update(const geometry::Pose2& T_odom_base, double dt_s, bool* done) {
   while (!moves_.empty()) {
     const Move& m = moves_.front();

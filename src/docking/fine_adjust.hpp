@@ -26,6 +26,12 @@ class FineAdjust {
   /// Plans the moves that take the robot at `T_odom_base` to `T_odom_goal`.
   void Start(const geometry::Pose2& T_odom_base, const geometry::Pose2& T_odom_goal);
 
+  /// A single turn on the spot to `yaw_rad` (a manoeuvre on the way to the shelf).
+  void StartTurn(double yaw_rad);
+  /// A single straight move along the current heading (forward or reversing) to `T_odom_to`'s
+  /// position.
+  void StartStraight(const geometry::Pose2& T_odom_base, const geometry::Pose2& T_odom_to);
+
   /// One control step of period dt_s; `done` once every move has finished.
   VelocityCommand Update(const geometry::Pose2& T_odom_base, double dt_s, bool* done);
 

@@ -4,6 +4,8 @@ namespace shelfdock::docking {
 
 std::string_view ToString(OutcomeCode code) {
   switch (code) {
+    case OutcomeCode::kPending:
+      return "pending";
     case OutcomeCode::kSuccess:
       return "success";
     case OutcomeCode::kShelfNotFound:
@@ -12,6 +14,10 @@ std::string_view ToString(OutcomeCode code) {
       return "detection_lost";
     case OutcomeCode::kWouldCollide:
       return "would_collide";
+    case OutcomeCode::kNoPath:
+      return "no_path";
+    case OutcomeCode::kTrackingFailed:
+      return "tracking_failed";
     case OutcomeCode::kWrongShelf:
       return "wrong_shelf";
     case OutcomeCode::kCodeNotFound:

@@ -69,8 +69,14 @@ TrackingStatus PathTracker::Update(const geometry::Pose2& T_frame_base, double d
 
   // Frenet feedback law (see header), then yaw-rate and lateral-acceleration limits.
   const double omega = 1.0 / config_.lateral_settle_m;
-  const double curvature = proj.curvature - 2.0 * omega * std::sin(proj.heading_error_rad) -
-                           omega * omega * proj.cross_track_m;
+  double curvature = proj.curvature - 2.0 * omega * std::sin(proj.heading_error_rad) -
+                     omega * omega * proj.cross_track_m;
+  // The last centimetres before a stop: what lateral error is left can no longer be removed
+  // without turning away from the goal heading (1 mm over 1 cm is 0.1 rad), so the heading alone
+  // is steered onto the path's, and the robot stops aligned instead of needing a turn after.
+  if (stopping && status.remaining_m < config_.heading_priority_m) {
+    curvature = proj.curvature - std::sin(proj.heading_error_rad) / config_.heading_settle_m;
+  }
   double w = v_cmd_ * curvature;
   double w_max = config_.max_yaw_rate_radps;
   if (v_cmd_ > 1e-6) w_max = std::min(w_max, config_.max_lateral_accel_mps2 / v_cmd_);

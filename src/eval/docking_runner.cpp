@@ -5,11 +5,12 @@
 #include <limits>
 #include <numbers>
 
+#include "docking/docking_area.hpp"
 #include "docking/path_planner.hpp"
 #include "docking/path_tracker.hpp"
+#include "eval/known_map.hpp"
 #include "geometry/angle.hpp"
 #include "perception/detector.hpp"
-#include "sim/lidar.hpp"
 #include "sim/world.hpp"
 
 namespace shelfdock::eval {
@@ -30,26 +31,13 @@ const geometry::ShelfModel* FindModel(const std::vector<geometry::ShelfModel>& m
   return nullptr;
 }
 
-/// The shelf whose leg rectangle contains the robot's centre (the one the camera looks at).
-std::optional<sim::ShelfInstance> ShelfAbove(const sim::World& world, const Pose2& T_world_base) {
-  for (const sim::ShelfInstance& s : world.shelves()) {
-    const Pose2 local = s.T_world_shelf.inverse() * T_world_base;
-    if (std::abs(local.x) < 0.5 * s.model.length_m && std::abs(local.y) < 0.5 * s.model.width_m) {
-      return s;
-    }
-  }
-  return std::nullopt;
-}
-
 /// Error of the robot against the true shelf centre in the goal frame (which end it entered
 /// from is the branch of yaw_offset or yaw_offset + pi nearest the robot's heading).
 PoseError ErrorInShelfFrame(const Pose2& T_world_base, const Pose2& T_world_shelf,
                             double yaw_offset_rad) {
   const Pose2 T_shelf_base = T_world_shelf.inverse() * T_world_base;
-  Pose2 T_shelf_goal(0.0, 0.0, yaw_offset_rad);
-  if (std::abs(geometry::AngleDiff(T_shelf_base.yaw, T_shelf_goal.yaw)) > 0.5 * std::numbers::pi) {
-    T_shelf_goal = Pose2(0.0, 0.0, yaw_offset_rad + std::numbers::pi);
-  }
+  const Pose2 T_shelf_goal =
+      docking::GoalBranchNearHeading(Pose2(0.0, 0.0, yaw_offset_rad), T_shelf_base.yaw);
   const Pose2 e = T_shelf_goal.inverse() * T_shelf_base;
   return {e.x, e.y, e.yaw, true};
 }
@@ -58,10 +46,6 @@ PoseError ErrorInShelfFrame(const Pose2& T_world_base, const Pose2& T_world_shel
 void AddPhaseTime(docking::Phase phase, const docking::Command& cmd, double dt_s,
                   PhaseTimes* times) {
   using docking::Phase;
-  for (const std::string& e : cmd.events) {
-    if (e.rfind("code_check:", 0) == 0) ++times->code_checks;
-    if (e.rfind("adjust: try", 0) == 0) ++times->adjustments;
-  }
   switch (phase) {
     case Phase::kApproach:
       times->approach_s += dt_s;
@@ -125,6 +109,7 @@ DockingRun RunDocking(const sim::Scenario& scenario,
   if (target != nullptr) {
     if (const geometry::ShelfModel* m = FindModel(models, target->model_name)) task.model = *m;
   }
+  task.map_obstacles = KnownObstacles(scenario, models, seed);
   const std::optional<sim::ShelfInstance> true_shelf =
       scenario.world.Shelf(scenario.target_shelf_id);
 
@@ -141,20 +126,17 @@ DockingRun RunDocking(const sim::Scenario& scenario,
                          });
   perception::MarkerDetector marker_detector(config.marker);
 
-  sim::DiffDriveRobot robot(config.robot, scenario.T_map_robot_start, seed);
-  sim::Lidar lidar(config.lidar, seed * 7919 + 1);
+  sim::DiffDriveRobot robot(config.robot,
+                            config.T_map_robot_start.value_or(scenario.T_map_robot_start), seed);
   const Pose2 T_base_lidar = dcfg.T_base_lidar;
   const double dt = dcfg.control_period_s;
-  const double scan_period = config.lidar.ScanPeriod();
-  double next_scan_t0 = robot.time_s();
-  double next_camera_t = robot.time_s();
-  int camera_frames = 0;
+  sim::SensorRig sensors(config.lidar, config.camera, config.sensors, T_base_lidar, seed,
+                         robot.time_s());
   int last_path_version = 0;
   bool verify_seen = false;
   bool before_check_set = false;
   bool camera_on = false;  // as the Docker commanded in the last step
   const std::vector<sim::LegFootprint> legs = scenario.world.LegFootprints();
-  geometry::LaserScan scan;
 
   while (!docker.done() && robot.time_s() < config.max_sim_time_s) {
     const double t = robot.time_s();
@@ -163,38 +145,13 @@ DockingRun RunDocking(const sim::Scenario& scenario,
     obs.T_odom_base = robot.T_odom_base();
     obs.T_map_base_estimate = robot.T_map_base_estimate();
     obs.lift_done = robot.LiftDone();
-
-    // A scan started at t0 is complete (and delivered) one period later.
-    bool have_scan = false;
-    if (t + 1e-9 >= next_scan_t0 + scan_period) {
-      const double t0 = next_scan_t0;
-      next_scan_t0 += scan_period;
-      const double since_entry = t - docker.docking_start_time();
-      const bool blackout = config.blackout_start_s >= 0.0 && std::isfinite(since_entry) &&
-                            since_entry >= config.blackout_start_s &&
-                            since_entry < config.blackout_start_s + config.blackout_duration_s;
-      if (!blackout) {
-        scan = lidar.Scan(
-            scenario.world,
-            [&robot, &T_base_lidar](double ti) { return robot.T_world_base_at(ti) * T_base_lidar; },
-            t0);
-        obs.scan = &scan;
-        have_scan = true;
-      }
-    }
-    // The camera, when on, at its frame rate.
-    if ((camera_on || docker.phase() == docking::Phase::kVerify) && t + 1e-9 >= next_camera_t) {
-      next_camera_t = t + 1.0 / config.camera_rate_hz;
-      obs.camera_frame = true;
-      const auto above =
-          config.camera_blind ? std::nullopt : ShelfAbove(scenario.world, robot.T_world_base());
-      if (above) {
-        const geometry::GrayImage image = sim::RenderMarker(
-            config.camera, above->id, sim::TagInCamera(robot.T_world_base(), above->T_world_shelf),
-            seed * 1000003 + static_cast<std::uint64_t>(++camera_frames));
-        obs.marker = marker_detector.Detect(image, config.camera.camera);
-      }
-    }
+    const sim::SensorReadings readings =
+        sensors.Sense(scenario.world, robot, t, t - docker.docking_start_time(),
+                      camera_on || docker.phase() == docking::Phase::kVerify);
+    obs.scan = readings.scan;
+    obs.camera_frame = readings.camera_frame;
+    if (readings.image) obs.marker = marker_detector.Detect(*readings.image, config.camera.camera);
+    const bool have_scan = readings.scan != nullptr;
 
     const docking::Phase phase_before = docker.phase();
     const docking::Command cmd = docker.Step(obs);
@@ -212,7 +169,9 @@ DockingRun RunDocking(const sim::Scenario& scenario,
           ErrorInShelfFrame(T_world_odom * *docker.lidar_goal_before_camera(),
                             true_shelf->T_world_shelf, dcfg.dock_yaw_offset_rad);
     }
-    if (!verify_seen && docker.phase() == docking::Phase::kVerify && true_shelf) {
+    const bool stopped_for_check =
+        docker.phase() == docking::Phase::kVerify || docker.phase() == docking::Phase::kAdjust;
+    if (!verify_seen && stopped_for_check && true_shelf) {
       verify_seen = true;
       if (!before_check_set) {
         before_check_set = true;
@@ -225,6 +184,11 @@ DockingRun RunDocking(const sim::Scenario& scenario,
       if (true_shelf) {
         run.error_after_check = ErrorInShelfFrame(robot.T_world_base(), true_shelf->T_world_shelf,
                                                   dcfg.dock_yaw_offset_rad);
+        // Checked on the way in and lifted at once: the stop is the LiDAR-guided pose.
+        if (!before_check_set) {
+          before_check_set = true;
+          run.error_before_check = run.error_after_check;
+        }
       }
     }
     for (const sim::LegFootprint& leg : legs) {
@@ -245,6 +209,7 @@ DockingRun RunDocking(const sim::Scenario& scenario,
       const Pose2 T_world_odom = robot.T_world_base() * obs.T_odom_base.inverse();
       if (have_scan) {
         const Pose2 T_world_lidar = robot.T_world_base() * T_base_lidar;
+        const geometry::LaserScan& scan = *readings.scan;
         for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
           const double r = scan.ranges[i];
           if (!std::isfinite(r)) continue;
@@ -278,6 +243,8 @@ DockingRun RunDocking(const sim::Scenario& scenario,
   run.time_s = robot.time_s() - start;
   run.replans = docker.replans();
   run.detections = docker.detections();
+  run.phases.code_checks = docker.code_checks();
+  run.phases.adjustments = docker.adjustments();
   return run;
 }
 
@@ -287,9 +254,10 @@ double PerfectKnowledgeTime(const sim::Scenario& scenario, const RunConfig& conf
   sim::DiffDriveConfig robot_cfg = config.robot;
   robot_cfg.odometry = {};
   sim::DiffDriveRobot robot(robot_cfg, scenario.T_map_robot_start, 0);
-  Pose2 goal = shelf->T_world_shelf * Pose2(0.0, 0.0, config.docking.dock_yaw_offset_rad);
-  if ((goal.inverse() * robot.T_world_base()).x > 0.0)
-    goal = goal * Pose2(0.0, 0.0, std::numbers::pi);
+  const Pose2 goal =
+      shelf->T_world_shelf * docking::NearerEndGoal(shelf->T_world_shelf,
+                                                    config.docking.dock_yaw_offset_rad,
+                                                    robot.T_world_base());
   const docking::ControllerConfig& ctl = config.docking.controller;
   const double dt = 1.0 / robot_cfg.control_rate_hz;
   docking::PathTracker tracker(ctl);
@@ -298,7 +266,7 @@ double PerfectKnowledgeTime(const sim::Scenario& scenario, const RunConfig& conf
   // the same approach as the Docker's (approach speed, arriving at max_speed_mps).
   const double along = (goal.inverse() * robot.T_world_base()).x;
   double t_entry = 0.0;
-  if (along < -(config.docking.entry_distance_m + 0.05)) {
+  if (along < -(config.docking.entry_distance_m + config.docking.entry_tolerance_m)) {
     const Pose2 entry = goal * Pose2(-config.docking.entry_distance_m, 0.0, 0.0);
     const docking::PlanResult approach =
         docking::PlanDockingPath(robot.T_world_base(), entry, config.docking.planner);

@@ -15,6 +15,7 @@
 #include "sim/lidar_config.hpp"
 #include "sim/marker_camera.hpp"
 #include "sim/scenario.hpp"
+#include "sim/sensor_rig.hpp"
 
 namespace shelfdock::eval {
 
@@ -26,16 +27,11 @@ struct RunConfig {
   sim::CameraConfig camera;
   perception::DetectorConfig detector;
   perception::MarkerDetectorConfig marker;
-  double camera_rate_hz = 15.0;   ///< [Hz] upward camera frames while it is on
+  sim::SensorRigConfig sensors;   ///< sensor timing and injected failures
   double max_sim_time_s = 120.0;  ///< [s] hard stop of the simulation loop
-  /// LiDAR blackout (a failure injection): scans stop arriving this long after the docking
-  /// area's entry, for blackout_duration_s. Negative start: no blackout.
-  double blackout_start_s = -1.0;
-  double blackout_duration_s = 1e9;
-  /// Camera failure (a failure injection): frames keep arriving but show no code, as with a
-  /// shelf whose code is missing or a covered lens.
-  bool camera_blind = false;
-  bool record = false;  ///< keep one RecordFrame per control step
+  bool record = false;            ///< keep one RecordFrame per control step
+  /// Start here instead of the scenario's robot_start (a start-anywhere sweep).
+  std::optional<geometry::Pose2> T_map_robot_start;
 };
 
 /// The robot's final pose against the TRUE shelf centre in the shelf's goal frame.

@@ -29,6 +29,8 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("creep_speed_mps", k.creep_speed_mps);
     f.Read("goal_tolerance_m", k.goal_tolerance_m);
     f.Read("max_cross_track_m", k.max_cross_track_m);
+    f.Read("heading_priority_m", k.heading_priority_m);
+    f.Read("heading_settle_m", k.heading_settle_m);
     f.RejectUnknown();
   }
   {
@@ -43,14 +45,12 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("drift_sigma_yaw_per_m", k.drift_sigma_yaw_per_m);
     f.Read("preset_sigma_xy_m", k.preset_sigma_xy_m);
     f.Read("preset_sigma_yaw_rad", k.preset_sigma_yaw_rad);
+    f.Read("preset_gate_sigmas", k.preset_gate_sigmas);
     f.RejectUnknown();
   }
   {
     YamlFields f(top.Child("safety"), path, "safety");
     auto& k = c.safety;
-    f.Read("robot_length_m", k.robot_length_m);
-    f.Read("robot_width_m", k.robot_width_m);
-    f.Read("robot_offset_x_m", k.robot_offset_x_m);
     f.Read("leg_margin_m", k.leg_margin_m);
     f.Read("obstacle_margin_m", k.obstacle_margin_m);
     f.Read("obstacle_lookahead_m", k.obstacle_lookahead_m);
@@ -74,6 +74,7 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("adjust_yaw_rate_radps", k.adjust_yaw_rate_radps);
     f.Read("adjust_yaw_accel_radps2", k.adjust_yaw_accel_radps2);
     f.Read("max_correction_m", k.max_correction_m);
+    f.Read("check_on_the_way_in", k.check_on_the_way_in);
     f.RejectUnknown();
   }
   {
@@ -107,6 +108,14 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
   top.Read("replan_xy_m", c.replan_xy_m);
   top.Read("replan_yaw_rad", c.replan_yaw_rad);
   top.Read("max_replans", c.max_replans);
+  top.Read("min_entry_distance_m", c.min_entry_distance_m);
+  top.Read("entry_tolerance_m", c.entry_tolerance_m);
+  top.Read("area_half_width_m", c.area_half_width_m);
+  top.Read("area_max_heading_rad", c.area_max_heading_rad);
+  top.Read("turn_penalty_m", c.turn_penalty_m);
+  top.Read("max_move_out_m", c.max_move_out_m);
+  top.Read("max_approach_plans", c.max_approach_plans);
+  top.Read("abort_decel_factor", c.abort_decel_factor);
   top.Read("lidar_cutoff_m", c.lidar_cutoff_m);
   top.Read("leg_min_range_m", c.leg_min_range_m);
   top.Read("leg_max_bearing_rad", c.leg_max_bearing_rad);

@@ -7,6 +7,7 @@ target_sources(shelfdock_sim PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/lift.cpp
   ${CMAKE_CURRENT_LIST_DIR}/marker_camera.cpp
   ${CMAKE_CURRENT_LIST_DIR}/marker_pattern.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/sensor_rig.cpp
 )
 # PRIVATE and for one file only (marker_pattern.cpp): the rendered code's cells come from
 # libapriltag's tag36h11 family table, the same table the detector decodes against, instead of

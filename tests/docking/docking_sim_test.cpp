@@ -7,6 +7,7 @@
 
 #include "eval/docking_runner.hpp"
 #include "eval/monte_carlo.hpp"
+#include "eval/random_start.hpp"
 #include "io/docking_config_yaml.hpp"
 #include "io/models_yaml.hpp"
 #include "io/scenario_yaml.hpp"
@@ -56,12 +57,13 @@ TEST(DockingSim, TurnsTowardAnEntryNoSmoothCurveReaches) {
   config.record = true;
   const DockingRun run = RunDocking(s, f.models, Method::kContinuous, 1029, config);
   ASSERT_TRUE(run.outcome.ok()) << run.outcome.reason;
-  bool turned = false;
+  // The approach planner either turns first or takes a shorter docking area it can reach with a
+  // smooth curve (a turn costs turn_penalty_m of straight); either way it plans an approach.
+  bool planned = false;
   for (const RecordFrame& frame : run.record) {
-    for (const std::string& e : frame.events)
-      turned |= e.find("turning toward") != std::string::npos;
+    for (const std::string& e : frame.events) planned |= e.rfind("approach: ", 0) == 0;
   }
-  EXPECT_TRUE(turned);
+  EXPECT_TRUE(planned);
   ASSERT_TRUE(run.error_after_check.valid);
   EXPECT_LT(std::abs(run.error_after_check.x), 0.003);
   EXPECT_LT(std::abs(run.error_after_check.y), 0.003);
@@ -79,6 +81,8 @@ TEST(DockingSim, EachFailureIsReportedWithItsReason) {
     const char* config = nullptr;  ///< docking config YAML (tests/data)
   };
   const char* kPaper = "config/scenarios/paper_docking.yaml";
+  // too_many_replans needs a goal that moves back and forth, which the simulator's shelves do
+  // not do: docker_test.cpp scripts it.
   const Case cases[] = {
       {"tests/data/docking_shelf_absent.yaml", OutcomeCode::kShelfNotFound},
       {"tests/data/docking_wrong_code.yaml", OutcomeCode::kWrongShelf},
@@ -86,13 +90,11 @@ TEST(DockingSim, EachFailureIsReportedWithItsReason) {
       {kPaper, OutcomeCode::kDetectionLost, 3.0},
       {kPaper, OutcomeCode::kCodeNotFound, -1.0, true},
       {kPaper, OutcomeCode::kTimeout, -1.0, false, "tests/data/docking_config_tiny_timeout.yaml"},
-      {kPaper, OutcomeCode::kTooManyReplans, -1.0, false,
-       "tests/data/docking_config_no_replans.yaml"},
   };
   for (const Case& c : cases) {
     RunConfig config;
-    config.blackout_start_s = c.blackout_s;
-    config.camera_blind = c.camera_blind;
+    config.sensors.blackout_start_s = c.blackout_s;
+    config.sensors.camera_blind = c.camera_blind;
     if (c.config != nullptr) config.docking = io::ReadDockingConfig(kRoot + "/" + c.config);
     const DockingRun run = RunDocking(f.Load(c.scenario), f.models, Method::kContinuous, 1, config);
     const std::string name = std::string(c.scenario) + " " + (c.config ? c.config : "") +
@@ -105,10 +107,43 @@ TEST(DockingSim, EachFailureIsReportedWithItsReason) {
   }
 }
 
+TEST(DockingSim, AisleTargetsOnBothSidesDockWithAShorterArea) {
+  // The paper's 4.5 m docking area does not fit across the 3 m aisle: the Docker shortens it to
+  // what the aisle allows and enters after a 90 degree turn, from either side of the aisle.
+  const Fixture f;
+  sim::Scenario s = f.Load("config/scenarios/warehouse_aisle.yaml");
+  for (int target : {104, 204}) {
+    s.target_shelf_id = target;
+    for (std::uint64_t seed : {1u, 2u}) {
+      const DockingRun run = RunDocking(s, f.models, Method::kContinuous, seed, RunConfig{});
+      ASSERT_TRUE(run.outcome.ok()) << target << " seed " << seed << ": " << run.outcome.reason;
+      EXPECT_LT(std::abs(run.error_after_check.x), 0.002);
+      EXPECT_LT(std::abs(run.error_after_check.y), 0.002);
+      EXPECT_LT(std::abs(run.error_after_check.yaw), 0.005);
+      EXPECT_GT(run.min_leg_clearance_m, 0.0) << target << " seed " << seed;
+    }
+  }
+}
+
+TEST(DockingSim, RandomStartsReachTheShelf) {
+  // Anywhere 0.3-8 m from the shelf, any heading: a handful of the CLI's sweep.
+  const Fixture f;
+  const sim::Scenario s = f.Load("config/scenarios/paper_docking.yaml");
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    RunConfig config;
+    config.T_map_robot_start =
+        RandomStart(s, seed, config.robot.footprint_length_m, config.robot.footprint_width_m);
+    ASSERT_TRUE(config.T_map_robot_start);
+    const DockingRun run = RunDocking(s, f.models, Method::kContinuous, seed, config);
+    EXPECT_TRUE(run.outcome.ok()) << "seed " << seed << ": " << run.outcome.reason;
+    EXPECT_GT(run.min_leg_clearance_m, 0.0) << "seed " << seed;
+  }
+}
+
 TEST(DockingSim, TheBaselineFailsTheSameWayWithoutACode) {
   const Fixture f;
   RunConfig config;
-  config.camera_blind = true;
+  config.sensors.camera_blind = true;
   const DockingRun run = RunDocking(f.Load("config/scenarios/paper_docking.yaml"), f.models,
                                     Method::kStopAndRecognise, 2, config);
   EXPECT_EQ(run.outcome.code, OutcomeCode::kCodeNotFound) << run.outcome.reason;
@@ -148,7 +183,7 @@ TEST(DockingSim, MonteCarloMeetsThePapersAccuracyAndBeatsTheBaseline) {
   // lift, ~11.9 s of driving and ~0.35 s of code check, so the baseline's only extra cost is the
   // stop at the parking spot (~0.9 s of braking and re-accelerating), standing to recognise
   // (settle_s 1 s + 5 scans = 1.31 s) and its larger blind-docking error (longer adjustments).
-  // Measured 16.3% on seeds 1000-1099 (14.74 s vs 17.62 s).
+  // Measured 18.1% on seeds 1000-1499 (14.22 s vs 17.36 s).
   // Asserted with a margin of ~4 points: at least 12% faster on average, and on no seed more
   // than 0.5 s slower (one method may need a fine adjustment where the other does not).
   EXPECT_LE(c.mean_time_s, 0.88 * b.mean_time_s) << c.mean_time_s << " vs " << b.mean_time_s;

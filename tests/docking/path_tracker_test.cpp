@@ -98,5 +98,19 @@ TEST(PathTracker, ReportsLostWhenFarOffThePath) {
   EXPECT_EQ(s.command.v_mps, 0.0);
 }
 
+TEST(PathTracker, StopsAlignedWithTheGoalHeadingWhenALateralErrorIsLeft) {
+  // A short straight onto the goal started 3 mm to the side: the lateral error cannot be removed
+  // in 0.1 m without turning, so the last heading_priority_m align the heading instead.
+  const ControllerConfig cc;
+  const Pose2 goal(1.0, 0.0, 0.0);
+  const Pose2 start = goal * Pose2(-0.1, 0.0, 0.0);
+  const Drive d = DriveAlong(start, start * Pose2(0.0, 0.003, 0.0), goal, cc);
+  ASSERT_TRUE(d.reached);
+  const Pose2 e = goal.inverse() * d.final_pose;
+  EXPECT_LT(std::abs(e.yaw), 0.001) << "heading error left at the stop";
+  EXPECT_LT(std::abs(e.y), 0.003) << "the lateral error does not grow";
+  EXPECT_LT(std::abs(e.x), 0.001);
+}
+
 }  // namespace
 }  // namespace shelfdock::docking
