@@ -114,9 +114,9 @@ class Docker {
     FreeSpace free_space;  ///< the map's obstacles and the target's legs at the preset (map)
     ApproachPlan plan;
     int plans = 0;
-    geometry::Pose2 T_odom_map;        ///< at planning time: manoeuvres run on odometry
-    bool replanned_for_block = false;  ///< the first blocked way was re-planned from a scan
-    double blocked_since_t = -1.0;     ///< [s] a later block is waited out, up to a limit
+    geometry::Pose2 T_odom_map;     ///< at planning time: manoeuvres run on odometry
+    int replans_for_block = 0;      ///< blocked ways re-planned from a scan so far
+    double blocked_since_t = -1.0;  ///< [s] a later block is waited out, up to a limit
   };
   /// kDock: recognition while moving, re-planning, obstacle stops.
   struct DockState {

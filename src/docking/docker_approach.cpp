@@ -156,10 +156,11 @@ void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
   if (obs.scan != nullptr &&
       (approach_.step == Step::kFollow || approach_.step == Step::kFirstTurn)) {
     const bool clear = ApproachStillClear(obs);
-    if (!clear && !approach_.replanned_for_block) {
-      // Most likely a neighbour standing off its map pose: plan again with what the scan shows.
+    if (!clear && approach_.replans_for_block < config_.max_block_replans) {
+      // Most likely a neighbour standing off its map pose, seen better as the robot nears it:
+      // plan again with what the scan shows.
       cmd->events.push_back("approach_blocked: the scan shows an obstacle on the way; re-planning");
-      approach_.replanned_for_block = true;
+      ++approach_.replans_for_block;
       approach_.step = Step::kPlan;
     } else if (!clear && approach_.blocked_since_t < 0.0) {
       cmd->events.push_back("approach_blocked: waiting for the way to clear");

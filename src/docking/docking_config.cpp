@@ -69,6 +69,7 @@ std::optional<std::string> Validate(const DockingConfig& c) {
       {c.turn_penalty_m >= 0.0, "turn_penalty_m: must be >= 0"},
       {c.max_move_out_m >= 0.0, "max_move_out_m: must be >= 0"},
       {c.max_approach_plans >= 1, "max_approach_plans: must be >= 1"},
+      {c.max_block_replans >= 0, "max_block_replans: must be >= 0"},
       {c.abort_decel_factor >= 1.0, "abort_decel_factor: must be >= 1"},
       {positive(c.detection_lost_s), "detection_lost_s: must be > 0"},
       {positive(c.timeout_s), "timeout_s: must be > 0"},

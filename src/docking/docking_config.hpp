@@ -124,9 +124,10 @@ struct DockingConfig {
   double area_max_heading_rad = 0.8;  ///< [rad] inside it the robot may dock from this heading
   double turn_penalty_m = 0.75;       ///< [m] of straight a turn on the spot is worth giving up
   double max_move_out_m = 1.0;        ///< [m] longest straight move to get free room to turn
-  int max_approach_plans = 8;         ///< approach plans (the first and after each move out)
-  double replan_xy_m = 0.004;         ///< [m] goal change that triggers a re-plan
-  double replan_yaw_rad = 0.004;      ///< [rad]
+  int max_block_replans = 3;      ///< approach re-plans for obstacles a scan shows; then waiting
+  int max_approach_plans = 8;     ///< approach plans (the first and after each move out)
+  double replan_xy_m = 0.004;     ///< [m] goal change that triggers a re-plan
+  double replan_yaw_rad = 0.004;  ///< [rad]
   /// Re-plans allowed beyond those the goal's real movement explains: each re-plan must follow
   /// a goal change of replan_xy_m / replan_yaw_rad, so the net change of the goal since the
   /// first plan, in those units, bounds the useful ones; more means the goal oscillates.

@@ -115,6 +115,7 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
   top.Read("turn_penalty_m", c.turn_penalty_m);
   top.Read("max_move_out_m", c.max_move_out_m);
   top.Read("max_approach_plans", c.max_approach_plans);
+  top.Read("max_block_replans", c.max_block_replans);
   top.Read("abort_decel_factor", c.abort_decel_factor);
   top.Read("lidar_cutoff_m", c.lidar_cutoff_m);
   top.Read("leg_min_range_m", c.leg_min_range_m);
