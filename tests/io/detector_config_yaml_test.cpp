@@ -62,7 +62,8 @@ TEST(DetectorConfigYamlTest, ErrorsNameTheKey) {
   ExpectKeyError("preprocess: {cluster_gap_m: -0.05}\n", "preprocess.cluster_gap_m");
   ExpectKeyError("preprocess: {roi_gamma: 0.4}\n", "preprocess.roi_gamma");
   ExpectKeyError("leg_fit: {max_iterations: many}\n", "leg_fit.max_iterations");
-  ExpectKeyError("shelf_fit: {max_interior_points: -2}\n", "shelf_fit.max_interior_points");
+  ExpectKeyError("evidence: {min_confidence: 1.5}\n", "evidence.min_confidence");
+  ExpectKeyError("evidence: {occluded_credit: -0.1}\n", "evidence.occluded_credit");
   ExpectKeyError("model_match: {gamma_sum_m: .nan}\n", "model_match.gamma_sum_m");
   EXPECT_THROW(ReadDetectorConfig("/nonexistent/detector.yaml"), InputError);
 }
