@@ -15,8 +15,11 @@ namespace shelfdock::perception {
 /// The shelf detector (paper 3.1-3.4): one scan (and optionally a preset shelf pose, in the
 /// scan's frame) in, every shelf found out, ranked.
 ///
-/// Ranking: with a preset, nearest to the preset centre first; without, more legs first, then
-/// smaller err_sum.
+/// Every Eq. 2 points-model pair is a hypothesis; the scan's evidence about it (legs seen,
+/// hidden or seen through, free space, leg sizes) gives its confidence, and hypotheses compete
+/// for legs (a leg cluster belongs to at most one returned shelf; see SelectDisjoint).
+/// Ranking: with a preset, nearest to the preset centre first; without, more visible legs first,
+/// then higher confidence.
 /// Heading: x along the long side. The pi ambiguity (pi/2 for square models) is resolved toward
 /// the preset heading when given; otherwise so that the shelf's x axis points away from the
 /// sensor, i.e. cos(yaw - bearing of the centre) >= 0 (for a square, the candidate closest to
