@@ -18,9 +18,7 @@ double FootprintDistance(const Eigen::Vector2d& p_base, const SafetyConfig& safe
 std::vector<LegDisc> LegDiscs(const geometry::ShelfModel& model,
                               const geometry::Pose2& T_frame_shelf) {
   std::vector<LegDisc> legs;
-  const double r = model.leg.shape == geometry::LegShape::kCircle
-                       ? model.leg.Radius()
-                       : 0.5 * std::hypot(model.leg.length_m, model.leg.width_m);
+  const double r = 0.5 * model.leg.Extent();
   for (const Eigen::Vector2d& c : model.LegCentres()) legs.push_back({T_frame_shelf * c, r});
   return legs;
 }

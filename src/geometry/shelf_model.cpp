@@ -4,6 +4,10 @@
 
 namespace shelfdock::geometry {
 
+double LegModel::Extent() const {
+  return shape == LegShape::kCircle ? length_m : std::hypot(length_m, width_m);
+}
+
 double ShelfModel::Diagonal() const { return std::hypot(length_m, width_m); }
 
 bool ShelfModel::IsSquare(double tolerance_m) const {

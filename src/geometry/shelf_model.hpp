@@ -16,6 +16,8 @@ struct LegModel {
   double width_m = 0.04;   ///< [m] along the shelf's short side (G_w in the paper)
 
   double Radius() const { return 0.5 * length_m; }  ///< round legs only
+  /// Largest extent of the section: the diagonal of a rectangle, the diameter of a circle.
+  double Extent() const;
 };
 
 /// A shelf type. length/width are leg-centre to leg-centre distances (length >= width); the

@@ -22,7 +22,6 @@ struct Hypothesis {
   Detection detection;                          // filled when it passed every check
   HypothesisRecord record;                      // what was found out about it
   std::array<int, 4> clusters{-1, -1, -1, -1};  // leg candidates it is made of
-  const geometry::ShelfModel* model = nullptr;
 };
 
 // Leg fits depend only on the cluster and the leg section, so they are shared between the
@@ -49,8 +48,8 @@ struct LegFitCache {
   }
 };
 
-// Fits one points-model pair (3.3 leg centres, 3.4 shelf pose), screens it and weighs the
-// scan's evidence. nullopt (with the reason counted) when it is not a shelf of this model.
+// What scoring a hypothesis reads besides its leg set and model: the same for every hypothesis
+// of a scan.
 struct ScoreInputs {
   const PreprocessOutput& pre;
   const std::vector<char>& shelf_like_spans;
@@ -92,7 +91,6 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   const DetectorConfig& config = in.config;
   Hypothesis h;
   h.clusters = set.legs;
-  h.model = &model;
   HypothesisRecord& rec = h.record;
   rec.model = model.name;
   std::array<Eigen::Vector2d, 4> legs{};

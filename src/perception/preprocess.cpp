@@ -4,15 +4,6 @@
 #include <cmath>
 
 namespace shelfdock::perception {
-namespace {
-
-// Largest visible extent of a leg: the section's diagonal (a circle's diameter).
-double LegExtent(const geometry::LegModel& leg) {
-  return leg.shape == geometry::LegShape::kCircle ? leg.length_m
-                                                  : std::hypot(leg.length_m, leg.width_m);
-}
-
-}  // namespace
 
 std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan) {
   std::vector<ScanPoint> out;
@@ -121,7 +112,7 @@ bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t n
   double max_extent = 0.0;
   double min_width = models.front().leg.width_m;
   for (const auto& m : models) {
-    max_extent = std::max(max_extent, LegExtent(m.leg));
+    max_extent = std::max(max_extent, m.leg.Extent());
     min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
   }
   if (extent_m > max_extent + config.leg_extent_margin_m) return false;

@@ -8,11 +8,6 @@
 namespace shelfdock::perception {
 namespace {
 
-double LegExtent(const geometry::LegModel& leg) {
-  return leg.shape == geometry::LegShape::kCircle ? leg.length_m
-                                                  : std::hypot(leg.length_m, leg.width_m);
-}
-
 // Index of the span holding point `i` (spans are contiguous and ordered).
 int SpanOfPoint(const std::vector<ClusterSpan>& spans, std::size_t i) {
   const auto it = std::upper_bound(spans.begin(), spans.end(), i,
@@ -145,7 +140,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   const double hx = 0.5 * model.length_m - config.interior_margin_m;
   const double hy = 0.5 * model.width_m - config.interior_margin_m;
   const double reach = 0.5 * model.Diagonal();
-  const double leg_extent = LegExtent(model.leg);
+  const double leg_extent = model.leg.Extent();
   auto listed = [](const std::vector<int>& v, int i) {
     return std::find(v.begin(), v.end(), i) != v.end();
   };

@@ -36,14 +36,20 @@ const geometry::ShelfModel& LargestModel(const Models& models) {
 
 ShelfInstance Shelf(const SceneBuilder& builder, int id) { return *builder.world().Shelf(id); }
 
-/// One shelf, any heading, the sensor anywhere around it.
-std::optional<Draft> BuildSingle(Context& c, const geometry::ShelfModel& model) {
+/// A shelf on its own at the origin, any heading, drawn leg paint.
+ShelfInstance AddLoneShelf(Context& c, const geometry::ShelfModel& model) {
   ShelfInstance shelf;
   shelf.id = kFirstRowA;
   shelf.model = model;
   shelf.T_world_shelf = geometry::Pose2(0.0, 0.0, c.rng.Angle());
   shelf.leg_material = DrawLegMaterial(c.rng, c.config);
   c.builder.AddShelf(shelf);
+  return shelf;
+}
+
+/// One shelf, any heading, the sensor anywhere around it.
+std::optional<Draft> BuildSingle(Context& c, const geometry::ShelfModel& model) {
+  const ShelfInstance shelf = AddLoneShelf(c, model);
   const auto T_world_lidar =
       PlaceSensorFacing(c.builder, c.rng, shelf, -kPi, kPi, std::nullopt, c.config);
   if (!T_world_lidar) return std::nullopt;
@@ -157,12 +163,7 @@ std::optional<Draft> BuildLargeClose(Context& c) {
   Draft draft;
   draft.target_id = kFirstRowA;
   if (c.rng.Chance(0.5)) {
-    ShelfInstance shelf;
-    shelf.id = kFirstRowA;
-    shelf.model = model;
-    shelf.T_world_shelf = geometry::Pose2(0.0, 0.0, c.rng.Angle());
-    shelf.leg_material = DrawLegMaterial(c.rng, c.config);
-    c.builder.AddShelf(shelf);
+    AddLoneShelf(c, model);
   } else {
     const LayoutRow row =
         AddRow(c.builder, c.rng, {}, UniformRow(model, RowCount(c), true), kFirstRowA, c.config);
