@@ -85,7 +85,8 @@ nlohmann::json DetectionJson(const perception::Detection& d,
                       {"legs_visible", d.legs_visible},
                       {"legs_occluded", d.legs_occluded},
                       {"interior_points", d.interior_points},
-                      {"leg_width_error", d.leg_width_error_m}};
+                      {"leg_width_error", d.leg_width_error_m},
+                      {"leg_width_bias", d.leg_width_bias_m}};
   if (T_base_lidar) j["base"] = PoseJson(perception::ShelfInBase(d, *T_base_lidar));
   if (T_map_base) {
     j["map"] =
@@ -128,7 +129,8 @@ nlohmann::json HypothesisJson(const perception::HypothesisRecord& h) {
           {"legs_seen_through", h.legs_seen_through},
           {"interior_points", h.interior_points},
           {"foreign_legs_inside", h.foreign_legs_inside},
-          {"leg_width_error", h.leg_width_error_m}};
+          {"leg_width_error", h.leg_width_error_m},
+          {"leg_width_bias", h.leg_width_bias_m}};
 }
 
 int RunDetect(const DetectOptions& opt) {

@@ -37,6 +37,10 @@ FirstDetection MakeFirst(const sim::LayoutScene& scene, const perception::Detect
   f.T_world_shelf = scene.T_world_lidar * d.T_lidar_shelf;
   f.legs_used = d.legs_used;
   f.err_sum = d.err_sum;
+  f.confidence = d.confidence;
+  f.legs_occluded = d.legs_occluded;
+  f.interior_points = d.interior_points;
+  f.leg_width_bias_m = d.leg_width_bias_m;
   std::tie(f.nearest_shelf_id, f.nearest_shelf_m) =
       NearestShelf(scene.world, f.T_world_shelf.translation());
   return f;

@@ -50,7 +50,11 @@ struct FirstDetection {
   geometry::Pose2 T_lidar_shelf;  ///< as the detector returned it
   geometry::Pose2 T_world_shelf;
   int legs_used = 0;
-  double err_sum = 0.0;                                              ///< [m] Eq. 2
+  double err_sum = 0.0;     ///< [m] Eq. 2
+  double confidence = 0.0;  ///< [0, 1] the detector's
+  int legs_occluded = 0;    ///< model legs hidden
+  int interior_points = 0;
+  double leg_width_bias_m = 0.0;                                     ///< points in the footprint
   int nearest_shelf_id = -1;                                         ///< -1: no shelf at all
   double nearest_shelf_m = std::numeric_limits<double>::infinity();  ///< [m] centre to centre
 };

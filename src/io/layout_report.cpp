@@ -93,6 +93,10 @@ nlohmann::json FirstJson(const std::optional<eval::FirstDetection>& first,
   j["model"] = first->model;
   j["legs_used"] = first->legs_used;
   j["err_sum"] = first->err_sum;
+  j["confidence"] = first->confidence;
+  j["legs_occluded"] = first->legs_occluded;
+  j["interior_points"] = first->interior_points;
+  j["leg_width_bias"] = first->leg_width_bias_m;
   j["nearest_shelf_id"] = first->nearest_shelf_id;
   j["nearest_shelf_m"] = std::isfinite(first->nearest_shelf_m)
                              ? nlohmann::json(first->nearest_shelf_m)
@@ -191,8 +195,10 @@ nlohmann::json LayoutSweepJson(const std::vector<eval::LayoutSummary>& rows,
   nlohmann::json table = nlohmann::json::array();
   for (const auto& r : rows) table.push_back(SummaryJson(r));
   nlohmann::json failures = nlohmann::json::array();
+  nlohmann::json all = nlohmann::json::array();
   for (const auto& s : scenes) {
     if (s.Failed()) failures.push_back(FailureJson(s));
+    all.push_back(FailureJson(s));
   }
   return {{"scenes_per_class", config.scenes_per_class},
           {"seed0", config.seed0},
@@ -201,7 +207,8 @@ nlohmann::json LayoutSweepJson(const std::vector<eval::LayoutSummary>& rows,
           {"min_legs_in_sight", config.min_legs_in_sight},
           {"accuracy_max_standoff_m", config.accuracy_max_standoff_m},
           {"rows", table},
-          {"failures", failures}};
+          {"failures", failures},
+          {"scenes", all}};
 }
 
 std::string WriteLayoutFailure(const std::string& dir, const sim::LayoutScene& scene,

@@ -28,6 +28,7 @@ struct Detection {
   int legs_occluded = 0;           ///< model legs hidden behind something nearer
   int interior_points = 0;         ///< scan points inside the footprint (occluders excused)
   double leg_width_error_m = 0.0;  ///< [m] worst seen leg width against the model's, beyond a beam
+  double leg_width_bias_m = 0.0;   ///< [m] mean seen leg width minus the model's silhouette
 };
 
 /// Why hypotheses (leg sets paired with a model) were not returned, one count per hypothesis
@@ -79,6 +80,7 @@ struct HypothesisRecord {
   int interior_points = 0;
   int foreign_legs_inside = 0;
   double leg_width_error_m = 0.0;
+  double leg_width_bias_m = 0.0;
   Verdict verdict = Verdict::kFit;
 };
 

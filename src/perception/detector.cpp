@@ -128,6 +128,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   rec.interior_points = ev.interior_points;
   rec.foreign_legs_inside = ev.foreign_legs_inside;
   rec.leg_width_error_m = ev.leg_width_error_m;
+  rec.leg_width_bias_m = ev.leg_width_bias_m;
   // A leg that beams pass straight through is not there: whatever made the other legs, it is
   // not this shelf (clutter forming a right triangle, or legs of two shelves).
   if (ev.legs_seen_through > 0) {
@@ -154,6 +155,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   d.legs_occluded = ev.legs_occluded;
   d.interior_points = ev.interior_points;
   d.leg_width_error_m = ev.leg_width_error_m;
+  d.leg_width_bias_m = ev.leg_width_bias_m;
   const double reference =
       in.T_lidar_preset ? in.T_lidar_preset->yaw : std::atan2(d.T_lidar_shelf.y, d.T_lidar_shelf.x);
   d.T_lidar_shelf.yaw = ResolveHeading(d.T_lidar_shelf.yaw, reference, model.IsSquare());

@@ -99,6 +99,9 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   const double alpha = std::abs(angle_increment_rad);
   const auto corners = model.LegCentres();
   std::vector<int> own_spans, excused_spans;
+  double width_bias_sum = 0.0;
+  double beam_sum = 0.0;
+  int width_count = 0;
   for (int k = 0; k < 4; ++k) {
     const int cand = corner_candidate[k];
     if (cand >= 0) {
@@ -109,8 +112,12 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       const double expected = LegSilhouetteWidth(model.leg, T_lidar_shelf.yaw, c.centroid);
       // One beam either way at the edges, plus the blur of the beam's footprint.
       const double slack = c.centroid.norm() * alpha + config.leg_width_slack_m;
-      ev.leg_width_error_m = std::max(
-          ev.leg_width_error_m, std::max(0.0, std::abs(SeenWidth(c, alpha) - expected) - slack));
+      const double seen = SeenWidth(c, alpha);
+      ev.leg_width_error_m =
+          std::max(ev.leg_width_error_m, std::max(0.0, std::abs(seen - expected) - slack));
+      width_bias_sum += seen - expected;
+      beam_sum += c.centroid.norm() * alpha;
+      ++width_count;
       continue;
     }
     LegLook look = LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, config);
@@ -121,6 +128,15 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       excused_spans.insert(excused_spans.end(), look.occluder_spans.begin(),
                            look.occluder_spans.end());
     }
+  }
+  if (width_count > 0) {
+    // One leg's width is quantised by a beam; the mean over three or four legs is not, so it
+    // tells a shelf's legs from legs of another section (26 mm round legs taken for a 40 mm
+    // square shelf's, posts of any size) where each width alone cannot.
+    ev.leg_width_bias_m = width_bias_sum / width_count;
+    ev.leg_width_bias_excess_m =
+        std::max(0.0, std::abs(ev.leg_width_bias_m) - 0.5 * beam_sum / width_count -
+                          config.leg_width_bias_slack_m);
   }
   for (LegView v : ev.legs) {
     ev.legs_seen += v == LegView::kSeen || v == LegView::kPresent;
@@ -177,7 +193,8 @@ double ShelfConfidence(const ShelfEvidence& ev, double err_sum_m, const Evidence
       config.foreign_leg_points * ev.foreign_legs_inside;
   const double free_space = 1.0 / (1.0 + blocked / config.interior_scale_points);
   const double w = ev.leg_width_error_m / config.leg_width_scale_m;
-  const double size = 1.0 / (1.0 + w * w);
+  const double b = ev.leg_width_bias_excess_m / config.leg_width_scale_m;
+  const double size = 1.0 / (1.0 + w * w) / (1.0 + b * b);
   return std::clamp(support * fit * free_space * size, 0.0, 1.0);
 }
 

@@ -33,7 +33,9 @@ struct ShelfEvidence {
   int interior_leg_points = 0;   ///< of interior_points, those of foreign legs
   int foreign_legs_inside = 0;   ///< legs of other leg sets (not its own) standing inside
   double leg_width_error_m = 0;  ///< worst |seen width - model leg's silhouette| over its legs
-  double confidence = 0.0;       ///< [0, 1], see ShelfConfidence
+  double leg_width_bias_m = 0;   ///< mean (seen width - model leg's silhouette) over its legs
+  double leg_width_bias_excess_m = 0;  ///< |leg_width_bias_m| beyond half a beam + the slack
+  double confidence = 0.0;             ///< [0, 1], see ShelfConfidence
 };
 
 /// Gathers the evidence for a shelf at `T_lidar_shelf` of `model` whose model corner k is the
@@ -55,7 +57,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
 ///   point of a foreign leg once, each other interior point object_point_weight times (once
 ///   when a leg is missing and nothing hides it), and each foreign leg inside
 ///   foreign_leg_points more;
-/// - leg size: 1 / (1 + (leg_width_error_m / leg_width_scale_m)^2).
+/// - leg size: 1 / (1 + (leg_width_error_m / leg_width_scale_m)^2)
+///             / (1 + (leg_width_bias_excess_m / leg_width_scale_m)^2).
 /// It reads as "how sure the scan makes us that this is a shelf of this model here": 1 is four
 /// legs seen at model size with nothing between them.
 double ShelfConfidence(const ShelfEvidence& evidence, double err_sum_m,

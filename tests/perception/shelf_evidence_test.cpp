@@ -120,6 +120,46 @@ TEST(ShelfEvidenceTest, ConfidenceIsOneForAPerfectShelfAndFallsWithEachFlaw) {
   through.legs_seen = 3;
   through.legs_seen_through = 1;
   EXPECT_NEAR(ShelfConfidence(through, 0.0, config), 0.75, 1e-12);
+  // The legs' mean width beyond its slack halves it at leg_width_scale_m.
+  ShelfEvidence thin = ev;
+  thin.leg_width_bias_excess_m = config.leg_width_scale_m;
+  EXPECT_NEAR(ShelfConfidence(thin, 0.0, config), 0.5, 1e-12);
+}
+
+// Four legs at the corners of the 1075x883 model (40 mm square legs), turned 45 degrees to the
+// sensor so a square leg shows its 57 mm diagonal, 1.5 m ahead: made of 40 mm square posts the
+// legs' mean seen width matches the model's; made of 26 mm round posts (the round model's legs)
+// it is about 30 mm short, which one leg's beam-quantised width could not show but the mean of
+// four does, and the confidence falls.
+TEST(ShelfEvidenceTest, LegsOfAnotherSectionLowerTheConfidence) {
+  const auto models = PaperModels();
+  const auto& model = models[1];
+  ASSERT_EQ(model.name, "t1-rect-1075x883");
+  const geometry::Pose2 T_shelf(1.5 + 0.5 * model.length_m, 0.05, 0.0);
+  auto detect = [&](bool round_legs) {
+    sim::World world;
+    testing::AddRoom(world);
+    for (const Eigen::Vector2d& corner : model.LegCentres()) {
+      const Eigen::Vector2d c = T_shelf * corner;
+      if (round_legs) {
+        world.AddRoundPost(c, 0.013);
+      } else {
+        world.AddSquarePost(geometry::Pose2(c.x(), c.y(), M_PI / 4), 0.04);
+      }
+    }
+    return Detector(models).Detect(SimScan(world, {}, 5), T_shelf);
+  };
+  const DetectionResult square = detect(false);
+  ASSERT_FALSE(square.detections.empty());
+  EXPECT_EQ(square.detections.front().model, model.name);
+  EXPECT_NEAR(square.detections.front().leg_width_bias_m, 0.0, 0.01);
+  const DetectionResult round = detect(true);
+  const bool same_model = !round.detections.empty() && round.detections.front().model == model.name;
+  // Either not returned at all (below min_confidence) or returned with the lower confidence.
+  if (same_model) {
+    EXPECT_LT(round.detections.front().leg_width_bias_m, -0.015);
+    EXPECT_LT(round.detections.front().confidence, 0.6 * square.detections.front().confidence);
+  }
 }
 
 }  // namespace
