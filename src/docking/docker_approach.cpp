@@ -111,7 +111,8 @@ void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
       return;
     case ApproachKind::kSmooth:
       follower_.SetPath(plan.path, config_.controller.approach_speed_mps,
-                        config_.controller.max_speed_mps, last_v_cmd_);
+                        config_.controller.max_speed_mps, last_v_cmd_,
+                        config_.controller.approach_lateral_settle_m);
       ++path_version_;
       approach_.step = ApproachState::Step::kFollow;
       return;
@@ -122,7 +123,8 @@ void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
       return;
     case ApproachKind::kMoveOut:
       if (!plan.path.empty()) {  // an arc away from a wall alongside
-        follower_.SetPath(plan.path, config_.controller.max_speed_mps, 0.0, 0.0);
+        follower_.SetPath(plan.path, config_.controller.max_speed_mps, 0.0, 0.0,
+                          config_.controller.approach_lateral_settle_m);
         ++path_version_;
       } else {
         manoeuvre_.StartStraight(obs.T_odom_base, approach_.T_odom_map * plan.T_frame_move_to);
@@ -172,7 +174,7 @@ void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
         follower_.SetPath(
             follower_.path(), config_.controller.approach_speed_mps,
             plan.kind == ApproachKind::kTurnDriveTurn ? 0.0 : config_.controller.max_speed_mps,
-            last_v_cmd_);
+            last_v_cmd_, config_.controller.approach_lateral_settle_m);
       }
     }
   }
@@ -218,7 +220,8 @@ void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
         path = curve.ok ? curve.path : plan.path;
         end_speed = config_.controller.max_speed_mps;
       }
-      follower_.SetPath(std::move(path), config_.controller.approach_speed_mps, end_speed, 0.0);
+      follower_.SetPath(std::move(path), config_.controller.approach_speed_mps, end_speed, 0.0,
+                        config_.controller.approach_lateral_settle_m);
       ++path_version_;
       approach_.step = Step::kFollow;
       return;

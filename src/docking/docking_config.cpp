@@ -23,6 +23,8 @@ std::optional<std::string> Validate(const DockingConfig& c) {
       {positive(c.controller.max_lateral_accel_mps2),
        "controller.max_lateral_accel_mps2: must be > 0"},
       {positive(c.controller.lateral_settle_m), "controller.lateral_settle_m: must be > 0"},
+      {positive(c.controller.approach_lateral_settle_m),
+       "controller.approach_lateral_settle_m: must be > 0"},
       {positive(c.controller.creep_speed_mps) &&
            c.controller.creep_speed_mps < c.controller.max_speed_mps,
        "controller.creep_speed_mps: must be in (0, max_speed_mps)"},

@@ -24,11 +24,15 @@ struct ControllerConfig {
   double max_yaw_rate_radps = 1.0;      ///< [rad/s]
   double max_lateral_accel_mps2 = 0.4;  ///< [m/s^2] slows the robot in curves
   double lateral_settle_m = 0.12;       ///< [m] distance scale over which lateral error decays
-  double creep_speed_mps = 0.015;       ///< [m/s] slowest speed before the final stop
-  double goal_tolerance_m = 0.0005;     ///< [m] stop when this close along the path
-  double max_cross_track_m = 0.25;      ///< [m] farther off the path is a tracking failure
-  double heading_priority_m = 0.02;     ///< [m] before a stop: steer the heading only
-  double heading_settle_m = 0.004;      ///< [m] distance scale of that heading correction
+  /// [m] the same during the approach: at approach speed, with localisation corrections of a few
+  /// centimetres at each scan, the docking stage's tight 0.12 m saturates the yaw rate and the
+  /// robot weaves (a rear corner then sweeps toward a neighbour's leg in an aisle)
+  double approach_lateral_settle_m = 0.4;
+  double creep_speed_mps = 0.015;    ///< [m/s] slowest speed before the final stop
+  double goal_tolerance_m = 0.0005;  ///< [m] stop when this close along the path
+  double max_cross_track_m = 0.25;   ///< [m] farther off the path is a tracking failure
+  double heading_priority_m = 0.02;  ///< [m] before a stop: steer the heading only
+  double heading_settle_m = 0.004;   ///< [m] distance scale of that heading correction
 };
 
 /// Fusion of detections over time (shelf_tracker.hpp).

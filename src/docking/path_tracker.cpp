@@ -5,8 +5,10 @@
 
 namespace shelfdock::docking {
 
-void PathTracker::SetPath(Path path, double cruise_mps, double end_speed_mps, double v_now_mps) {
+void PathTracker::SetPath(Path path, double cruise_mps, double end_speed_mps, double v_now_mps,
+                          double lateral_settle_m) {
   path_ = std::move(path);
+  lateral_settle_m_ = lateral_settle_m > 0.0 ? lateral_settle_m : config_.lateral_settle_m;
   hint_ = 0;
   cruise_mps_ = cruise_mps;
   end_speed_mps_ = end_speed_mps;
@@ -68,7 +70,7 @@ TrackingStatus PathTracker::Update(const geometry::Pose2& T_frame_base, double d
   v_cmd_ = std::max(v_cmd_, 0.0);
 
   // Frenet feedback law (see header), then yaw-rate and lateral-acceleration limits.
-  const double omega = 1.0 / config_.lateral_settle_m;
+  const double omega = 1.0 / lateral_settle_m_;
   double curvature = proj.curvature - 2.0 * omega * std::sin(proj.heading_error_rad) -
                      omega * omega * proj.cross_track_m;
   // The last centimetres before a stop: what lateral error is left can no longer be removed

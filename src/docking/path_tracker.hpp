@@ -30,7 +30,9 @@ class PathTracker {
 
   /// Starts following `path` at `cruise_mps`, arriving with `end_speed_mps` (0: stop at the goal).
   /// `v_now_mps` is the current speed so a re-plan while moving keeps the speed continuous.
-  void SetPath(Path path, double cruise_mps, double end_speed_mps, double v_now_mps);
+  /// `lateral_settle_m` > 0 replaces the config's lateral_settle_m for this path.
+  void SetPath(Path path, double cruise_mps, double end_speed_mps, double v_now_mps,
+               double lateral_settle_m = 0.0);
 
   /// One control step at pose `T_frame_base` (the path's frame), period dt.
   TrackingStatus Update(const geometry::Pose2& T_frame_base, double dt_s);
@@ -49,6 +51,7 @@ class PathTracker {
   double cruise_mps_ = 0.0;
   double end_speed_mps_ = 0.0;
   double v_cmd_ = 0.0;
+  double lateral_settle_m_ = 0.0;  ///< [m] of the current path
 };
 
 }  // namespace shelfdock::docking

@@ -26,6 +26,7 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("max_yaw_rate_radps", k.max_yaw_rate_radps);
     f.Read("max_lateral_accel_mps2", k.max_lateral_accel_mps2);
     f.Read("lateral_settle_m", k.lateral_settle_m);
+    f.Read("approach_lateral_settle_m", k.approach_lateral_settle_m);
     f.Read("creep_speed_mps", k.creep_speed_mps);
     f.Read("goal_tolerance_m", k.goal_tolerance_m);
     f.Read("max_cross_track_m", k.max_cross_track_m);
