@@ -104,7 +104,8 @@ function drawPlot(canvas, title, unit, series, cursorT) {
     t0 = Math.min(t0, t); t1 = Math.max(t1, t); v0 = Math.min(v0, v); v1 = Math.max(v1, v);
   });
   c.font = "11px system-ui, sans-serif"; c.fillStyle = "#333";
-  c.fillText(`${title} [${unit}]`, left, 11);
+  const heading = unit ? `${title} [${unit}]` : title;
+  c.fillText(heading, left, 11);
   if (!isFinite(t0)) { c.fillStyle = "#888"; c.fillText("no data", left, h / 2); return; }
   if (v1 - v0 < 1e-9) { v0 -= 1; v1 += 1; }
   if (t1 - t0 < 1e-9) t1 = t0 + 1;
@@ -115,7 +116,7 @@ function drawPlot(canvas, title, unit, series, cursorT) {
   c.fillStyle = "#666";
   c.fillText(v1.toPrecision(3), 2, top + 8); c.fillText(v0.toPrecision(3), 2, h - bottom);
   c.fillText(`${t0.toFixed(1)} s`, left, h - 3); c.fillText(`${t1.toFixed(1)} s`, w - right - 40, h - 3);
-  let lx = left + 130;
+  let lx = left + c.measureText(heading).width + 16;
   for (const s of series) {
     c.strokeStyle = s.color; c.lineWidth = 1.5; c.beginPath();
     let pen = false;
