@@ -2,6 +2,20 @@
 # web/ into one C++ header, so the CLI writes self-contained pages from anywhere. Each page's
 # <script src="X.js"></script> and <link rel="stylesheet" href="X.css"> naming a file of web/
 # is replaced by that file's text, so the pages open as they are from web/ too (one source).
+
+# Replaces each match of `pattern` (its group 1: a file name in WEB_DIR) in the variable named
+# `html_var` by that file's text between `open` and `close`.
+function(inline_assets html_var pattern open close)
+  set(html "${${html_var}}")
+  string(REGEX MATCHALL "${pattern}" tags "${html}")
+  foreach(tag IN LISTS tags)
+    string(REGEX REPLACE "${pattern}" "\\1" name "${tag}")
+    file(READ "${WEB_DIR}/${name}" text)
+    string(REPLACE "${tag}" "${open}\n${text}${close}" html "${html}")
+  endforeach()
+  set(${html_var} "${html}" PARENT_SCOPE)
+endfunction()
+
 set(pages replay:kReplayPage explain:kExplainPage)
 set(delim "shelfdock_web")
 set(body "")
@@ -10,18 +24,8 @@ foreach(entry IN LISTS pages)
   list(GET parts 0 page)
   list(GET parts 1 symbol)
   file(READ "${WEB_DIR}/${page}.html" html)
-  string(REGEX MATCHALL "<script src=\"[A-Za-z0-9_.-]+\\.js\"></script>" scripts "${html}")
-  foreach(tag IN LISTS scripts)
-    string(REGEX REPLACE "<script src=\"([^\"]+)\"></script>" "\\1" name "${tag}")
-    file(READ "${WEB_DIR}/${name}" js)
-    string(REPLACE "${tag}" "<script>\n${js}</script>" html "${html}")
-  endforeach()
-  string(REGEX MATCHALL "<link rel=\"stylesheet\" href=\"[A-Za-z0-9_.-]+\\.css\">" links "${html}")
-  foreach(tag IN LISTS links)
-    string(REGEX REPLACE "<link rel=\"stylesheet\" href=\"([^\"]+)\">" "\\1" name "${tag}")
-    file(READ "${WEB_DIR}/${name}" css)
-    string(REPLACE "${tag}" "<style>\n${css}</style>" html "${html}")
-  endforeach()
+  inline_assets(html "<script src=\"([A-Za-z0-9_.-]+\\.js)\"></script>" "<script>" "</script>")
+  inline_assets(html "<link rel=\"stylesheet\" href=\"([A-Za-z0-9_.-]+\\.css)\">" "<style>" "</style>")
   string(FIND "${html}" ")${delim}\"" clash)
   if(NOT clash EQUAL -1)
     message(FATAL_ERROR "web/${page}.html contains the raw-string delimiter )${delim}\"")
