@@ -99,14 +99,16 @@ function drawPlot(canvas, title, unit, series, cursorT) {
   c.clearRect(0, 0, w, h);
   const left = 44, right = 6, top = 14, bottom = 16;
   let t0 = Infinity, t1 = -Infinity, v0 = Infinity, v1 = -Infinity;
+  // The time axis spans all samples, so plots of one run line up even where a series has gaps.
   for (const s of series) s.t.forEach((t, k) => {
+    t0 = Math.min(t0, t); t1 = Math.max(t1, t);
     const v = s.v[k]; if (v === null || !isFinite(v)) return;
-    t0 = Math.min(t0, t); t1 = Math.max(t1, t); v0 = Math.min(v0, v); v1 = Math.max(v1, v);
+    v0 = Math.min(v0, v); v1 = Math.max(v1, v);
   });
   c.font = "11px system-ui, sans-serif"; c.fillStyle = "#333";
   const heading = unit ? `${title} [${unit}]` : title;
   c.fillText(heading, left, 11);
-  if (!isFinite(t0)) { c.fillStyle = "#888"; c.fillText("no data", left, h / 2); return; }
+  if (!isFinite(v0)) { c.fillStyle = "#888"; c.fillText("no data", left, h / 2); return; }
   if (v1 - v0 < 1e-9) { v0 -= 1; v1 += 1; }
   if (t1 - t0 < 1e-9) t1 = t0 + 1;
   const X = (t) => left + (t - t0) / (t1 - t0) * (w - left - right);
