@@ -8,7 +8,11 @@ packages=(
   libeigen3-dev libceres-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev libapriltag-dev
   librosbag-storage-dev libsensor-msgs-dev pluginlib-dev
+  chromium
 )
+# Node.js and npm run the browser tests (tests/browser). A machine may already have them from
+# elsewhere (e.g. NodeSource's nodejs, which bundles npm): take Debian's only when none is there.
+command -v node > /dev/null && command -v npm > /dev/null || packages+=(nodejs npm)
 
 missing=()
 for p in "${packages[@]}"; do

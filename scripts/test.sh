@@ -4,4 +4,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 bash scripts/check_format.sh
+# The browser tests' npm packages (playwright-core, pinned by the lockfile; no browser download).
+(cd tests/browser && npm ci --no-audit --no-fund --loglevel=error)
 ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600

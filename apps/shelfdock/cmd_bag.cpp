@@ -10,6 +10,7 @@
 #include "io/input_error.hpp"
 #include "io/rosbag_scans.hpp"
 #include "io/scan_json.hpp"
+#include "progress.hpp"
 
 namespace shelfdock::app {
 namespace {
@@ -29,10 +30,17 @@ int RunBag(const BagOptions& opt) {
     std::cout << nlohmann::json{{"bag", opt.bag}, {"laser_scan_topics", topics}}.dump() << "\n";
     return kExitOk;
   }
+  Progress reading("bag " + opt.bag, 0);
+  reading.Update(0, "reading");
   const auto scans = io::ReadBagScans(opt.bag, opt.topic);
   std::ofstream out(opt.out);
   if (!out) throw io::InputError(opt.out, "", "cannot write file");
-  for (const auto& scan : scans) out << io::ScanToJson(scan).dump() << "\n";
+  Progress writing("bag -> " + opt.out, static_cast<long>(scans.size()));
+  long written = 0;
+  for (const auto& scan : scans) {
+    out << io::ScanToJson(scan).dump() << "\n";
+    writing.Update(++written);
+  }
   std::cout << nlohmann::json{{"bag", opt.bag},
                               {"topic", opt.topic},
                               {"scans", scans.size()},

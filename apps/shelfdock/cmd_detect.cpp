@@ -14,11 +14,14 @@
 
 #include "commands.hpp"
 #include "io/detector_config_yaml.hpp"
+#include "io/explain_json.hpp"
+#include "io/html_page.hpp"
 #include "io/input_error.hpp"
 #include "io/models_yaml.hpp"
 #include "io/scan_json.hpp"
 #include "perception/detector.hpp"
 #include "perception/frames.hpp"
+#include "web_pages.hpp"
 
 namespace shelfdock::app {
 namespace {
@@ -31,7 +34,12 @@ struct DetectOptions {
   std::string extrinsic;
   std::string robot_pose;
   bool explain = false;
+  std::string html;
 };
+
+// The explain page holds every point of every scan: past this many scans it gets too heavy for a
+// browser to open comfortably; cut the file first (one scan per line in JSON Lines).
+constexpr std::size_t kMaxHtmlScans = 200;
 
 // Parses "X,Y,YAW" (metres, metres, radians); `flag` names the option in errors.
 std::optional<geometry::Pose2> ParsePose(const std::string& text, const std::string& flag) {
@@ -142,20 +150,43 @@ int RunDetect(const DetectOptions& opt) {
   const perception::DetectorConfig config =
       opt.params.empty() ? perception::DetectorConfig{} : io::ReadDetectorConfig(opt.params);
   const auto scans = io::ReadScans(opt.scan);
+  if (!opt.html.empty() && scans.size() > kMaxHtmlScans) {
+    throw io::InputError(opt.scan, "--html",
+                         std::to_string(scans.size()) + " scans; the explain page holds at most " +
+                             std::to_string(kMaxHtmlScans) + " (cut the file first)");
+  }
   const perception::Detector detector(std::move(models), config);
+  nlohmann::json page_scans = nlohmann::json::array();
 
   for (const auto& scan : scans) {
-    const perception::DetectionResult result = detector.Detect(scan, preset, opt.explain);
+    const perception::DetectionResult result =
+        detector.Detect(scan, preset, opt.explain || !opt.html.empty());
     nlohmann::json dets = nlohmann::json::array();
     for (const auto& d : result.detections)
       dets.push_back(DetectionJson(d, T_base_lidar, T_map_base));
     nlohmann::json out{{"detections", dets}, {"stats", StatsJson(result.stats)}};
-    if (opt.explain) {
-      nlohmann::json hyps = nlohmann::json::array();
-      for (const auto& h : result.hypotheses) hyps.push_back(HypothesisJson(h));
-      out["hypotheses"] = hyps;
-    }
+    nlohmann::json hyps = nlohmann::json::array();
+    for (const auto& h : result.hypotheses) hyps.push_back(HypothesisJson(h));
+    if (opt.explain) out["hypotheses"] = hyps;
     std::cout << out.dump() << "\n";
+    if (!opt.html.empty()) {
+      nlohmann::json page_scan = io::ExplainGeometryJson(scan, detector, preset);
+      page_scan["detections"] = out["detections"];
+      page_scan["stats"] = out["stats"];
+      page_scan["hypotheses"] = hyps;
+      page_scan["stamp"] = scan.stamp;
+      page_scans.push_back(std::move(page_scan));
+    }
+  }
+  if (!opt.html.empty()) {
+    const nlohmann::json page{
+        {"source", opt.scan},
+        {"preset", preset ? nlohmann::json{{"x", preset->x}, {"y", preset->y}, {"yaw", preset->yaw}}
+                          : nlohmann::json(nullptr)},
+        {"models", io::ModelsJson(detector.models())},
+        {"min_confidence", detector.config().evidence.min_confidence},
+        {"scans", page_scans}};
+    io::WritePage(opt.html, kExplainPage, page);
   }
   return kExitOk;
 }
@@ -176,6 +207,9 @@ void AddDetectCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--robot-pose", opt->robot_pose, "T_map_base as X,Y,YAW: also report map poses");
   cmd->add_flag("--explain", opt->explain,
                 "also print every hypothesis (leg set and model) with its evidence and verdict");
+  cmd->add_option("--html", opt->html,
+                  "also write the explain page here: points, clusters, ROI, legs, hypotheses with "
+                  "their verdicts, detections (one self-contained HTML file)");
   cmd->callback([opt, exit_code] { *exit_code = RunDetect(*opt); });
 }
 

@@ -12,12 +12,15 @@
 #include "eval/monte_carlo.hpp"
 #include "eval/random_start.hpp"
 #include "io/docking_config_yaml.hpp"
+#include "io/html_page.hpp"
 #include "io/input_error.hpp"
 #include "io/lidar_config_yaml.hpp"
 #include "io/models_yaml.hpp"
 #include "io/robot_yaml.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_yaml.hpp"
+#include "progress.hpp"
+#include "web_pages.hpp"
 
 namespace shelfdock::app {
 namespace {
@@ -32,6 +35,7 @@ struct DockOptions {
   int target = -1;
   bool random_start = false;
   std::string record;
+  std::string html;
   std::uint64_t seed = 1;
   int runs = 100;
   double blackout_s = -1.0;
@@ -114,13 +118,22 @@ int RunDock(const DockOptions& opt) {
   const docking::Method method = ParseMethod(opt.method);
   eval::RunConfig config = MakeRunConfig(opt);
   config.T_map_robot_start = StartFor(opt, scenario, config, opt.seed);
-  config.record = !opt.record.empty();
+  config.record = !opt.record.empty() || !opt.html.empty();
   const eval::DockingRun run = eval::RunDocking(scenario, models, method, opt.seed, config);
+  const geometry::Pose2 T_map_shelf_preset =
+      scenario.PresetPose(scenario.target_shelf_id, opt.seed).value_or(geometry::Pose2());
   if (!opt.record.empty()) {
-    io::WriteRunRecord(
-        opt.record, scenario,
-        scenario.PresetPose(scenario.target_shelf_id, opt.seed).value_or(geometry::Pose2()), run,
-        config.robot.footprint_length_m, config.robot.footprint_width_m);
+    io::WriteRunRecord(opt.record, scenario, T_map_shelf_preset, run,
+                       config.robot.footprint_length_m, config.robot.footprint_width_m);
+  }
+  if (!opt.html.empty()) {
+    const std::string name = scenario.name + " seed " + std::to_string(opt.seed) + " " +
+                             std::string(docking::ToString(method));
+    const nlohmann::json record = {{"name", name},
+                                   {"lines", io::RunRecordLines(scenario, T_map_shelf_preset, run,
+                                                                config.robot.footprint_length_m,
+                                                                config.robot.footprint_width_m)}};
+    io::WritePage(opt.html, kReplayPage, {{"records", {record}}});
   }
   std::cout << io::DockingRunToJson(run).dump() << "\n";
   return run.outcome.ok() ? kExitOk : kExitFailure;
@@ -140,6 +153,8 @@ int RunEvalDocking(const DockOptions& opt) {
                      {"seed0", opt.seed},
                      {"random_start", opt.random_start}};
   double mean_time[2] = {0.0, 0.0};
+  Progress progress("eval-docking", static_cast<long>(methods.size()) * opt.runs);
+  long done = 0;
   for (docking::Method method : methods) {
     std::vector<eval::DockingRun> runs;
     nlohmann::json failures = nlohmann::json::array();
@@ -149,6 +164,8 @@ int RunEvalDocking(const DockOptions& opt) {
       config.T_map_robot_start = StartFor(opt, scenario, config, seed);
       runs.push_back(eval::RunDocking(scenario, models, method, seed, config));
       const eval::DockingRun& run = runs.back();
+      progress.Update(++done,
+                      std::string(docking::ToString(method)) + " seed " + std::to_string(seed));
       if (run.min_leg_clearance_m <= 0.0) {
         touched.push_back({{"seed", seed}, {"min_leg_clearance_m", run.min_leg_clearance_m}});
       }
@@ -210,6 +227,8 @@ void AddDockCommands(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   dock->add_option("--seed", opt->seed, "random seed")->capture_default_str();
   dock->add_option("--record", opt->record, "write the run as JSON Lines for replay");
+  dock->add_option("--html", opt->html,
+                   "write the replay page of the run here (one self-contained HTML file)");
   dock->callback([opt, exit_code] { *exit_code = RunDock(*opt); });
 
   auto eopt = std::make_shared<DockOptions>();

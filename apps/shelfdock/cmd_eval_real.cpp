@@ -15,6 +15,7 @@
 #include "io/models_yaml.hpp"
 #include "io/rosbag_scans.hpp"
 #include "perception/detector.hpp"
+#include "progress.hpp"
 
 namespace shelfdock::app {
 namespace {
@@ -34,7 +35,7 @@ double Percentile(std::vector<double> values, double q) {
 }
 
 nlohmann::json EvaluateTopic(const perception::Detector& detector,
-                             const std::vector<geometry::LaserScan>& scans) {
+                             const std::vector<geometry::LaserScan>& scans, Progress& progress) {
   std::vector<double> times_us;
   times_us.reserve(scans.size());
   int scans_with_detection = 0;
@@ -50,6 +51,7 @@ nlohmann::json EvaluateTopic(const perception::Detector& detector,
     scans_with_detection += result.detections.empty() ? 0 : 1;
     leg_candidates += result.stats.leg_candidates;
     leg_sets += result.stats.leg_sets;
+    progress.Update(static_cast<long>(times_us.size()));
   }
   const double n = static_cast<double>(scans.size());
   return {{"scans", scans.size()},
@@ -79,7 +81,11 @@ int RunEvalReal(const EvalRealOptions& opt) {
       topics.push_back(opt.topic);
     }
     for (const auto& topic : topics) {
-      nlohmann::json row = EvaluateTopic(detector, io::ReadBagScans(bag, topic));
+      Progress progress("eval-real " + bag + " " + topic, 0);
+      progress.Update(0, "reading");
+      const std::vector<geometry::LaserScan> scans = io::ReadBagScans(bag, topic);
+      Progress detecting("eval-real " + topic, static_cast<long>(scans.size()));
+      nlohmann::json row = EvaluateTopic(detector, scans, detecting);
       row["bag"] = bag;
       row["topic"] = topic;
       report.push_back(row);

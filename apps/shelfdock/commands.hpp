@@ -18,5 +18,6 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code);
 void AddSimulateCommand(CLI::App& app, int* exit_code);
 void AddMarkerCommand(CLI::App& app, int* exit_code);
 void AddDockCommands(CLI::App& app, int* exit_code);  ///< dock and eval-docking
+void AddViewCommand(CLI::App& app, int* exit_code);   ///< view: records -> replay page
 
 }  // namespace shelfdock::app

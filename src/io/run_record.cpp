@@ -43,11 +43,11 @@ json DockingRunToJson(const eval::DockingRun& run) {
   return j;
 }
 
-void WriteRunRecord(const std::string& path, const sim::Scenario& scenario,
-                    const geometry::Pose2& T_map_shelf_preset, const eval::DockingRun& run,
-                    double robot_length_m, double robot_width_m) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path, "", "cannot open the record file for writing");
+std::vector<json> RunRecordLines(const sim::Scenario& scenario,
+                                 const geometry::Pose2& T_map_shelf_preset,
+                                 const eval::DockingRun& run, double robot_length_m,
+                                 double robot_width_m) {
+  std::vector<json> lines;
   json header{{"type", "header"},
               {"scenario", scenario.name},
               {"method", std::string(docking::ToString(run.method))},
@@ -71,7 +71,7 @@ void WriteRunRecord(const std::string& path, const sim::Scenario& scenario,
     shelves.push_back(sj);
   }
   header["shelves"] = shelves;
-  out << header.dump() << "\n";
+  lines.push_back(std::move(header));
   for (const eval::RecordFrame& f : run.record) {
     json j{{"type", "step"},
            {"t", f.t_s},
@@ -95,11 +95,23 @@ void WriteRunRecord(const std::string& path, const sim::Scenario& scenario,
       j["path"] = p;
     }
     if (!f.events.empty()) j["events"] = f.events;
-    out << j.dump() << "\n";
+    lines.push_back(std::move(j));
   }
   json summary = DockingRunToJson(run);
   summary["type"] = "summary";
-  out << summary.dump() << "\n";
+  lines.push_back(std::move(summary));
+  return lines;
+}
+
+void WriteRunRecord(const std::string& path, const sim::Scenario& scenario,
+                    const geometry::Pose2& T_map_shelf_preset, const eval::DockingRun& run,
+                    double robot_length_m, double robot_width_m) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path, "", "cannot open the record file for writing");
+  for (const json& line :
+       RunRecordLines(scenario, T_map_shelf_preset, run, robot_length_m, robot_width_m)) {
+    out << line.dump() << "\n";
+  }
   if (!out) throw InputError(path, "", "write failed");
 }
 

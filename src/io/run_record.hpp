@@ -13,9 +13,10 @@
 //   {"type": "summary", ...the `shelfdock dock` result object...}: "result" ("success" or the
 //    failure's snake_case name), "reason", "time_s" (docking area entry to end of lift),
 //    "error_before_check" / "error_after_check" ({"x","y","yaw"} against the true shelf centre
-//    in the shelf frame, null when not reached; before = the LiDAR-guided final error: the
-//    LiDAR-guided goal where it truly lay when the upward camera first corrected it on the way
-//    in, else the pose at the stop for the check; after = the pose at the lift),
+//    in the shelf frame, {"x": null, "y": null, "yaw": null} when not reached; before = the
+//    LiDAR-guided final error: the LiDAR-guided goal where it truly lay when the upward camera
+//    first corrected it on the way in, else the pose at the stop for the check; after = the pose
+//    at the lift),
 //    "replans", "detections", "min_leg_clearance_m",
 //    "method", "seed", "phases": {"approach_s" (before the entry, not in time_s), "dock_s",
 //    "final_slow_s" (part of dock_s below 0.1 m/s), "stand_s" (baseline parking), "verify_s",
@@ -28,6 +29,7 @@
 // i.e. mapped with the true world-from-odometry transform at that step. Units: m, rad, s.
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -42,6 +44,13 @@ nlohmann::json PhaseTimesJson(const eval::PhaseTimes& times);
 
 /// The `shelfdock dock` result object (result, reason, time_s, errors, ...).
 nlohmann::json DockingRunToJson(const eval::DockingRun& run);
+
+/// The record of `run` (run with RunConfig::record) as its JSON Lines objects: header, steps,
+/// summary. The replay page (`shelfdock dock --html`, `shelfdock view`) embeds these.
+std::vector<nlohmann::json> RunRecordLines(const sim::Scenario& scenario,
+                                           const geometry::Pose2& T_map_shelf_preset,
+                                           const eval::DockingRun& run, double robot_length_m,
+                                           double robot_width_m);
 
 /// Writes the record of `run` (run with RunConfig::record) as JSON Lines; throws InputError when
 /// the file cannot be written.

@@ -1,0 +1,82 @@
+#include "io/explain_json.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "../common/paper_models.hpp"
+#include "io/scan_json.hpp"
+#include "perception/preprocess.hpp"
+
+namespace shelfdock::io {
+namespace {
+
+geometry::LaserScan ExampleScan() {
+  return ReadScans(std::string(SHELFDOCK_SOURCE_DIR) + "/config/example_scan.json").front();
+}
+
+// Every valid return is either a kept point (in exactly one cluster) or a removed trailing
+// point, and the clusters flagged as candidates are the detector's leg candidates.
+TEST(ExplainJson, AccountsForEveryReturnAndAgreesWithTheDetector) {
+  const geometry::LaserScan scan = ExampleScan();
+  const perception::Detector detector(testing::PaperModels());
+  const perception::DetectionResult result = detector.Detect(scan);
+  const nlohmann::json j = ExplainGeometryJson(scan, detector, std::nullopt);
+
+  const std::size_t valid = perception::ScanToPoints(scan).size();
+  ASSERT_GT(valid, 100u);
+  EXPECT_EQ(j["points"].size() + j["trailing"].size(), valid);
+  EXPECT_EQ(static_cast<int>(j["trailing"].size()), result.stats.trailing_removed);
+  EXPECT_TRUE(j["roi"].is_null());
+
+  std::size_t in_clusters = 0;
+  int candidates = 0;
+  for (const auto& c : j["clusters"]) {
+    in_clusters += c["points"].get<std::size_t>();
+    candidates += c["candidate"].get<bool>() ? 1 : 0;
+    EXPECT_TRUE(c["in_roi"].get<bool>());  // no preset: the whole scan
+  }
+  EXPECT_EQ(in_clusters, j["points"].size());
+  EXPECT_EQ(candidates, result.stats.leg_candidates);
+  for (const auto& p : j["points"]) {
+    const int c = p[2].get<int>();
+    ASSERT_GE(c, 0);
+    ASSERT_LT(c, static_cast<int>(j["clusters"].size()));
+  }
+}
+
+// With a preset the ROI is roi_gamma times the longest model diagonal around the preset centre,
+// and a cluster is in it when its centroid is.
+TEST(ExplainJson, RoiFollowsThePreset) {
+  const geometry::LaserScan scan = ExampleScan();
+  const auto models = testing::PaperModels();
+  const perception::Detector detector(models);
+  const geometry::Pose2 preset(2.0, 0.2, 0.1);
+  const nlohmann::json j = ExplainGeometryJson(scan, detector, preset);
+
+  double diagonal = 0.0;
+  for (const auto& m : models) diagonal = std::max(diagonal, std::hypot(m.length_m, m.width_m));
+  const double r = perception::PreprocessConfig{}.roi_gamma * diagonal;
+  ASSERT_FALSE(j["roi"].is_null());
+  EXPECT_DOUBLE_EQ(j["roi"]["x"].get<double>(), preset.x);
+  EXPECT_DOUBLE_EQ(j["roi"]["y"].get<double>(), preset.y);
+  EXPECT_NEAR(j["roi"]["r"].get<double>(), r, 1e-12);
+  int inside = 0, outside = 0;
+  for (const auto& c : j["clusters"]) {
+    // Centroids are written to the millimetre: skip the ones on the boundary.
+    const double d = std::hypot(c["x"].get<double>() - preset.x, c["y"].get<double>() - preset.y);
+    if (std::abs(d - r) < 2e-3) continue;
+    EXPECT_EQ(c["in_roi"].get<bool>(), d < r) << "cluster at distance " << d;
+    (d < r ? inside : outside)++;
+  }
+  EXPECT_GT(inside, 0);
+  EXPECT_GT(outside, 0);
+  const perception::DetectionResult result = detector.Detect(scan, preset);
+  int candidates = 0;
+  for (const auto& c : j["clusters"]) candidates += c["candidate"].get<bool>() ? 1 : 0;
+  EXPECT_EQ(candidates, result.stats.leg_candidates);
+}
+
+}  // namespace
+}  // namespace shelfdock::io
