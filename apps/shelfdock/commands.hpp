@@ -18,5 +18,9 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code);
 void AddSimulateCommand(CLI::App& app, int* exit_code);
 void AddMarkerCommand(CLI::App& app, int* exit_code);
 void AddDockCommands(CLI::App& app, int* exit_code);  ///< dock and eval-docking
+/// `eval` with its sub-subcommands `paper` and `peers` (cmd_eval*.cpp).
+void AddEvalCommands(CLI::App& app, int* exit_code);
+void AddEvalPaperCommand(CLI::App& eval, int* exit_code);
+void AddEvalPeersCommand(CLI::App& eval, int* exit_code);
 
 }  // namespace shelfdock::app

@@ -154,7 +154,14 @@ DockingRun RunDocking(const sim::Scenario& scenario,
     const bool have_scan = readings.scan != nullptr;
 
     const docking::Phase phase_before = docker.phase();
+    const int detections_before = docker.detections();
     const docking::Command cmd = docker.Step(obs);
+    if (config.keep_recognitions && docker.detections() != detections_before &&
+        docker.last_detection_odom() && std::isfinite(docker.docking_start_time())) {
+      const Pose2 T_map_odom = obs.T_map_base_estimate * obs.T_odom_base.inverse();
+      run.recognitions.push_back({t, T_map_odom * *docker.last_detection_odom(),
+                                  T_map_odom * docker.shelf_tracker().estimate()});
+    }
     AddPhaseTime(docker.done() ? phase_before : docker.phase(), cmd, dt, &run.phases);
 
     camera_on = cmd.camera_on;
