@@ -41,6 +41,17 @@ FluctuationSummary Summarise(const std::vector<PoseSpread>& spreads) {
   return s;
 }
 
+/// `count` of the poses, evenly spaced from the first to the last (all when there are fewer).
+std::vector<geometry::Pose2> EvenlySpaced(const std::vector<geometry::Pose2>& poses, int count) {
+  if (static_cast<int>(poses.size()) <= count || count < 2) return poses;
+  std::vector<geometry::Pose2> out;
+  for (int k = 0; k < count; ++k) {
+    out.push_back(poses[static_cast<std::size_t>(
+        std::lround(static_cast<double>(k) * (poses.size() - 1) / (count - 1)))]);
+  }
+  return out;
+}
+
 double MeanTime(const std::vector<DockingRun>& runs, int* successes) {
   double sum = 0.0;
   *successes = 0;
@@ -79,18 +90,23 @@ DockingExperimentResult RunDockingExperiment(const sim::Scenario& scenario,
   const int total = 2 * config.runs;
 
   std::vector<DockingRun> continuous, stop;
-  std::vector<PoseSpread> detected, fused;
+  std::vector<PoseSpread> detected, detected_10, fused, detected_map, fused_map;
   for (int i = 0; i < config.runs; ++i) {
     const std::uint64_t seed = config.seed0 + static_cast<std::uint64_t>(i);
     DockingRun run = RunDocking(scenario, models, docking::Method::kContinuous, seed, run_config);
-    std::vector<geometry::Pose2> det, fus;
     // Fig. 7: the recognitions of the docking stage (RunDocking keeps those after the entry).
+    std::vector<geometry::Pose2> det, fus, det_map, fus_map;
     for (const Recognition& r : run.recognitions) {
-      det.push_back(r.T_map_shelf_detected);
-      fus.push_back(r.T_map_shelf_fused);
+      det.push_back(r.T_world_shelf_detected);
+      fus.push_back(r.T_world_shelf_fused);
+      det_map.push_back(r.T_map_shelf_detected);
+      fus_map.push_back(r.T_map_shelf_fused);
     }
     detected.push_back(SpreadOf(det, symmetry));
+    detected_10.push_back(SpreadOf(EvenlySpaced(det, config.paper_recognitions), symmetry));
     fused.push_back(SpreadOf(fus, symmetry));
+    detected_map.push_back(SpreadOf(det_map, symmetry));
+    fused_map.push_back(SpreadOf(fus_map, symmetry));
     out.final_errors.push_back(run.error_before_check);
     run.recognitions.shrink_to_fit();
     continuous.push_back(std::move(run));
@@ -105,7 +121,10 @@ DockingExperimentResult RunDockingExperiment(const sim::Scenario& scenario,
   }
 
   out.detected = Summarise(detected);
+  out.detected_10 = Summarise(detected_10);
   out.fused = Summarise(fused);
+  out.detected_map = Summarise(detected_map);
+  out.fused_map = Summarise(fused_map);
 
   // The trace: the run whose x range is the median one.
   std::vector<std::pair<double, int>> by_range;

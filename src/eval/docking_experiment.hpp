@@ -15,8 +15,9 @@ namespace shelfdock::eval {
 /// seeded dockings to the same shelf with the continuous method, and the same seeds with
 /// stop-and-recognise.
 struct DockingExperimentConfig {
-  int runs = 100;              ///< [-] dockings per method
-  std::uint64_t seed0 = 1000;  ///< run i has seed seed0 + i (both methods)
+  int runs = 100;               ///< [-] dockings per method
+  std::uint64_t seed0 = 1000;   ///< run i has seed seed0 + i (both methods)
+  int paper_recognitions = 10;  ///< [-] the paper's Fig. 7 count, for the evenly spaced subset
 };
 
 /// Median and worst over runs of one per-run figure.
@@ -46,8 +47,14 @@ struct DockingExperimentResult {
   int runs = 0;
   int continuous_successes = 0;
   int stop_successes = 0;
-  FluctuationSummary detected;  ///< single-scan detections
-  FluctuationSummary fused;     ///< the tracker's estimate after each detection
+  // In the world, placed with the true robot pose: the recognitions' own spread.
+  FluctuationSummary detected;     ///< single-scan detections
+  FluctuationSummary detected_10;  ///< 10 of them, evenly spaced in the run (as many as the paper)
+  FluctuationSummary fused;        ///< the tracker's estimate after each detection
+  // In the map, through the robot's simulated localisation estimate (its white noise, 10 mm and
+  // 5 mrad per update by default, and its wandering bias add to the spread).
+  FluctuationSummary detected_map;
+  FluctuationSummary fused_map;
   FinalErrorSummary final_error;
   std::vector<PoseError> final_errors;  ///< per continuous run (scatter plot)
   double continuous_time_s = std::numeric_limits<double>::quiet_NaN();  ///< [s] mean, successes

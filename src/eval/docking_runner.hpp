@@ -75,11 +75,14 @@ struct PhaseTimes {
   int adjustments = 0;        ///< fine adjustments made
 };
 
-/// One accepted detection during a run and the fused shelf estimate right after it, both placed
-/// in the map with the robot's own localisation estimate of that instant (what the paper's Fig. 7
-/// plots: "project this result ... onto the map coordinate system").
+/// One accepted detection during a run and the fused shelf estimate right after it, placed in
+/// the world with the TRUE robot pose of that instant (the recognition's own error, as a robot
+/// with perfect localisation would map it) and in the map with the robot's own localisation
+/// estimate (what the paper's Fig. 7 plots: "project this result ... onto the map").
 struct Recognition {
   double t_s = 0.0;  ///< [s] simulated time
+  geometry::Pose2 T_world_shelf_detected;
+  geometry::Pose2 T_world_shelf_fused;
   geometry::Pose2 T_map_shelf_detected;
   geometry::Pose2 T_map_shelf_fused;
 };

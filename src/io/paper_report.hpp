@@ -16,8 +16,10 @@ namespace shelfdock::io {
 std::vector<std::string> PaperTableLines(const eval::PaperEvaluation& evaluation);
 
 /// Every figure: {"config": {...}, "sensors": [{"sensor", "lidar": {...}, "table1": [...],
-/// "fluctuation": {"detected", "fused"}, "docking_error": {...}, "time": {...},
-/// "trace": [...], "final_errors": [...]}], "paper": {...}}.
+/// "fluctuation": {"detected", "fused", "detected_map", "fused_map"}, "docking_error": {...},
+/// "time": {...}, "trace": [{"t", "detected", "fused" (placed with the true pose), "detected_map"}]
+/// (the run with the median x range), "final_errors": [...] (null: the run never reached the
+/// check)}], "paper": {...}}.
 nlohmann::json PaperJson(const eval::PaperEvaluation& evaluation);
 
 }  // namespace shelfdock::io

@@ -38,7 +38,7 @@ def check_paper(doc, stdout):
                         "single_scan_p95_error"):
                 finite(r[key], f"{name} {r['model']} {key}")
             assert r["recognitions"] >= 1, f"{name} {r['model']}: nothing recognised"
-        for kind in ("detected", "fused"):
+        for kind in ("detected", "detected_10", "fused", "detected_map", "fused_map"):
             f = s["fluctuation"][kind]
             assert f["runs"] >= 1, f"{name} {kind}: no run with 2 recognitions"
             for group in ("range", "stddev"):
