@@ -85,7 +85,10 @@ def check_peers(doc, stdout):
     for name, got in sets.items():
         assert got == methods, f"{name}: {got}"
     for row in doc["search"]:
-        assert row["mean_exhaustive_checks"] >= row["mean_pruned_checks"], row
+        # Past a few candidates the pruning pays: the issue asks >= 10x fewer checks at 50
+        # clusters; with 10 or more candidates it is already past 10x (about 50x measured).
+        if row["mean_candidates"] >= 10:
+            assert row["mean_exhaustive_checks"] >= 10 * row["mean_pruned_checks"], row
     assert "Leg search work" in stdout, stdout
 
 
@@ -119,7 +122,7 @@ def main():
     expect_bad_input(shelfdock, source, ["eval", "peers", "--params",
                                          "tests/data/detector_unknown_key.yaml"],
                      "detector_unknown_key.yaml")
-    expect_bad_input(shelfdock, source, ["eval"], "eval")
+    expect_bad_input(shelfdock, source, ["eval"], "subcommand is required")
 
 
 if __name__ == "__main__":
