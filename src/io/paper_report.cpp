@@ -1,26 +1,19 @@
 #include "io/paper_report.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "eval/paper_figures.hpp"
+#include "io/report_format.hpp"
 
 namespace shelfdock::io {
 namespace {
 
-/// `value * scale` with `decimals` decimals, "n/a" when not finite.
-std::string Num(double value, double scale = 1.0, int decimals = 1) {
-  if (!std::isfinite(value)) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", decimals, value * scale);
-  return buf;
-}
+nlohmann::json Json(double v) { return JsonNumber(v); }
 
 std::string MedianWorst(const eval::RunQuantiles& q, double scale, int decimals = 1) {
-  return Num(q.median, scale, decimals) + " (" + Num(q.worst, scale, decimals) + ")";
+  return FormatNumber(q.median, scale, decimals) + " (" + FormatNumber(q.worst, scale, decimals) +
+         ")";
 }
-
-nlohmann::json Json(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
 nlohmann::json Json(const eval::RunQuantiles& q) {
   return {{"median", Json(q.median)}, {"worst", Json(q.worst)}};
@@ -70,8 +63,8 @@ std::vector<std::string> PaperTableLines(const eval::PaperEvaluation& ev) {
   };
 
   // Table 1.
-  out.push_back("**Table 1, fitted size** (sensor " + Num(ev.config.size.standoff_m, 1.0, 1) +
-                " m before the front legs, " +
+  out.push_back("**Table 1, fitted size** (sensor " +
+                FormatNumber(ev.config.size.standoff_m, 1.0, 1) + " m before the front legs, " +
                 std::to_string(ev.config.size.recognitions_per_model) +
                 " recognitions per model; fitted length x width [m], error of the mean in %, "
                 "single-scan p95 error in brackets)");
@@ -81,18 +74,21 @@ std::vector<std::string> PaperTableLines(const eval::PaperEvaluation& ev) {
     const std::string& name = s[0].sizes[m].model;
     std::string line = "| " + name + " | ";
     if (const eval::PaperTable1Row* p = PaperRow(name)) {
-      line += Num(p->fitted_length_m, 1.0, 4) + " x " + Num(p->fitted_width_m, 1.0, 4) + ": " +
-              Num(p->length_error, 100.0, 2) + " % / " + Num(p->width_error, 100.0, 2) + " %";
+      line += FormatNumber(p->fitted_length_m, 1.0, 4) + " x " +
+              FormatNumber(p->fitted_width_m, 1.0, 4) + ": " +
+              FormatNumber(p->length_error, 100.0, 2) + " % / " +
+              FormatNumber(p->width_error, 100.0, 2) + " %";
     } else {
       line += "-";
     }
     line += " |";
     for (const auto& r : s) {
       const eval::ModelSize& z = r.sizes[m];
-      line += " " + Num(z.mean_length_m, 1.0, 4) + " x " + Num(z.mean_width_m, 1.0, 4) + ": " +
-              Num(z.length_error, 100.0, 2) + " % / " + Num(z.width_error, 100.0, 2) + " % (" +
-              Num(z.single_scan_p95_error, 100.0, 2) + " %), " + std::to_string(z.recognitions) +
-              "/" + std::to_string(z.attempts) + " |";
+      line += " " + FormatNumber(z.mean_length_m, 1.0, 4) + " x " +
+              FormatNumber(z.mean_width_m, 1.0, 4) + ": " + FormatNumber(z.length_error, 100.0, 2) +
+              " % / " + FormatNumber(z.width_error, 100.0, 2) + " % (" +
+              FormatNumber(z.single_scan_p95_error, 100.0, 2) + " %), " +
+              std::to_string(z.recognitions) + "/" + std::to_string(z.attempts) + " |";
     }
     out.push_back(line);
   }
@@ -117,13 +113,13 @@ std::vector<std::string> PaperTableLines(const eval::PaperEvaluation& ev) {
     double scale;
   };
   const FRow frows[] = {
-      {"x max-min", Num(eval::kPaperFluctuationX, 1e3),
+      {"x max-min", FormatNumber(eval::kPaperFluctuationX, 1e3),
        [](const eval::FluctuationSummary& f) -> const eval::RunQuantiles& { return f.x_range; },
        1e3},
-      {"y max-min", Num(eval::kPaperFluctuationY, 1e3),
+      {"y max-min", FormatNumber(eval::kPaperFluctuationY, 1e3),
        [](const eval::FluctuationSummary& f) -> const eval::RunQuantiles& { return f.y_range; },
        1e3},
-      {"yaw max-min", Num(eval::kPaperFluctuationYaw, 1e3),
+      {"yaw max-min", FormatNumber(eval::kPaperFluctuationYaw, 1e3),
        [](const eval::FluctuationSummary& f) -> const eval::RunQuantiles& { return f.yaw_range; },
        1e3},
       {"x std", "-",
@@ -170,22 +166,24 @@ std::vector<std::string> PaperTableLines(const eval::PaperEvaluation& ev) {
     return std::to_string(r.docking.continuous_successes) + "/" + std::to_string(r.docking.runs);
   });
   add_row("\\|x\\| p95 / max", "<= 10", [](const eval::PaperSensorResult& r) {
-    return Num(r.docking.final_error.x.p95, 1e3) + " / " + Num(r.docking.final_error.x.max, 1e3);
+    return FormatNumber(r.docking.final_error.x.p95, 1e3) + " / " +
+           FormatNumber(r.docking.final_error.x.max, 1e3);
   });
   add_row("\\|y\\| p95 / max", "<= 10", [](const eval::PaperSensorResult& r) {
-    return Num(r.docking.final_error.y.p95, 1e3) + " / " + Num(r.docking.final_error.y.max, 1e3);
+    return FormatNumber(r.docking.final_error.y.p95, 1e3) + " / " +
+           FormatNumber(r.docking.final_error.y.max, 1e3);
   });
   add_row("\\|yaw\\| p95 / max", "<= 14", [](const eval::PaperSensorResult& r) {
-    return Num(r.docking.final_error.yaw.p95, 1e3) + " / " +
-           Num(r.docking.final_error.yaw.max, 1e3);
+    return FormatNumber(r.docking.final_error.yaw.p95, 1e3) + " / " +
+           FormatNumber(r.docking.final_error.yaw.max, 1e3);
   });
   add_row("within 10 mm and 14 mrad", "all", [](const eval::PaperSensorResult& r) {
-    return Num(r.docking.final_error.within_paper_band, 100.0) + " %";
+    return FormatNumber(r.docking.final_error.within_paper_band, 100.0) + " %";
   });
   add_row("after the code check, max x / y / yaw", "-", [](const eval::PaperSensorResult& r) {
     const auto& f = r.docking.final_error;
-    return Num(f.after_x.max, 1e3) + " / " + Num(f.after_y.max, 1e3) + " / " +
-           Num(f.after_yaw.max, 1e3);
+    return FormatNumber(f.after_x.max, 1e3) + " / " + FormatNumber(f.after_y.max, 1e3) + " / " +
+           FormatNumber(f.after_yaw.max, 1e3);
   });
   out.push_back("");
 
@@ -195,22 +193,25 @@ std::vector<std::string> PaperTableLines(const eval::PaperEvaluation& ev) {
       "lift, mean over successful runs [s]");
   out.push_back("");
   header("measure", "paper", false);
-  add_row(
-      "continuous", Num(eval::kPaperContinuousTime, 1.0, 2),
-      [](const eval::PaperSensorResult& r) { return Num(r.docking.continuous_time_s, 1.0, 2); });
-  add_row("stop-and-recognise", Num(eval::kPaperStopTime, 1.0, 3),
+  add_row("continuous", FormatNumber(eval::kPaperContinuousTime, 1.0, 2),
           [](const eval::PaperSensorResult& r) {
-            return Num(r.docking.stop_time_s, 1.0, 2) + " (" +
+            return FormatNumber(r.docking.continuous_time_s, 1.0, 2);
+          });
+  add_row("stop-and-recognise", FormatNumber(eval::kPaperStopTime, 1.0, 3),
+          [](const eval::PaperSensorResult& r) {
+            return FormatNumber(r.docking.stop_time_s, 1.0, 2) + " (" +
                    std::to_string(r.docking.stop_successes) + "/" + std::to_string(r.docking.runs) +
                    " ok)";
           });
-  add_row(
-      "saving", Num(eval::kPaperTimeSaving, 100.0, 1) + " %",
-      [](const eval::PaperSensorResult& r) { return Num(r.docking.time_saving, 100.0, 1) + " %"; });
-  add_row("perfect knowledge", "-",
-          [](const eval::PaperSensorResult& r) { return Num(r.docking.perfect_time_s, 1.0, 2); });
+  add_row("saving", FormatNumber(eval::kPaperTimeSaving, 100.0, 1) + " %",
+          [](const eval::PaperSensorResult& r) {
+            return FormatNumber(r.docking.time_saving, 100.0, 1) + " %";
+          });
+  add_row("perfect knowledge", "-", [](const eval::PaperSensorResult& r) {
+    return FormatNumber(r.docking.perfect_time_s, 1.0, 2);
+  });
   add_row("continuous / perfect knowledge", "-", [](const eval::PaperSensorResult& r) {
-    return Num(r.docking.continuous_time_s / r.docking.perfect_time_s, 1.0, 3) + "x";
+    return FormatNumber(r.docking.continuous_time_s / r.docking.perfect_time_s, 1.0, 3) + "x";
   });
   return out;
 }

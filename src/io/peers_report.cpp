@@ -1,19 +1,14 @@
 #include "io/peers_report.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include "io/report_format.hpp"
 
 namespace shelfdock::io {
 namespace {
 
-std::string Num(double value, double scale = 1.0, int decimals = 1) {
-  if (!std::isfinite(value)) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", decimals, value * scale);
-  return buf;
-}
+nlohmann::json Json(double v) { return JsonNumber(v); }
 
-nlohmann::json Json(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 nlohmann::json Json(const eval::Quantiles& q) {
   return {{"p50", Json(q.p50)}, {"p95", Json(q.p95)}};
 }
@@ -38,16 +33,17 @@ std::vector<std::string> PeerTableLines(const std::vector<eval::PeerRow>& rows) 
     const eval::PeerRow* ref = Reference(rows, r.set);
     std::string ratio = "-";
     if (ref != nullptr && r.method != eval::PeerMethod::kShelfdock) {
-      ratio = Num(r.position_m.p95 / ref->position_m.p95, 1.0, 2) + " / " +
-              Num(r.heading_rad.p95 / ref->heading_rad.p95, 1.0, 2) + " / " +
-              Num(r.time_s.p50 / ref->time_s.p50, 1.0, 2);
+      ratio = FormatNumber(r.position_m.p95 / ref->position_m.p95, 1.0, 2) + " / " +
+              FormatNumber(r.heading_rad.p95 / ref->heading_rad.p95, 1.0, 2) + " / " +
+              FormatNumber(r.time_s.p50 / ref->time_s.p50, 1.0, 2);
     }
-    out.push_back("| " + r.set + " | " + std::string(eval::PeerMethodName(r.method)) + " | " +
-                  Num(r.SuccessRate(), 100.0, 1) + " % (" + std::to_string(r.successes) + "/" +
-                  std::to_string(r.scenes) + ") | " + Num(r.position_m.p50, 1e3) + " / " +
-                  Num(r.position_m.p95, 1e3) + " | " + Num(r.heading_rad.p50, 1e3) + " / " +
-                  Num(r.heading_rad.p95, 1e3) + " | " + Num(r.time_s.p50, 1e6, 0) + " / " +
-                  Num(r.time_s.p95, 1e6, 0) + " | " + ratio + " |");
+    out.push_back(
+        "| " + r.set + " | " + std::string(eval::PeerMethodName(r.method)) + " | " +
+        FormatNumber(r.SuccessRate(), 100.0, 1) + " % (" + std::to_string(r.successes) + "/" +
+        std::to_string(r.scenes) + ") | " + FormatNumber(r.position_m.p50, 1e3) + " / " +
+        FormatNumber(r.position_m.p95, 1e3) + " | " + FormatNumber(r.heading_rad.p50, 1e3) + " / " +
+        FormatNumber(r.heading_rad.p95, 1e3) + " | " + FormatNumber(r.time_s.p50, 1e6, 0) + " / " +
+        FormatNumber(r.time_s.p95, 1e6, 0) + " | " + ratio + " |");
   }
   return out;
 }
@@ -59,11 +55,12 @@ std::vector<std::string> SearchTableLines(const std::vector<eval::SearchRow>& ro
       "exhaustive / pruned | pruned time p50 [us] | exhaustive time p50 [us] |");
   out.push_back("|---|---|---|---|---|---|---|");
   for (const auto& r : rows) {
-    out.push_back(
-        "| " + r.set + " | " + Num(r.mean_candidates, 1.0, 1) + " | " +
-        Num(r.mean_pruned_checks, 1.0, 0) + " | " + Num(r.mean_exhaustive_checks, 1.0, 0) + " | " +
-        Num(r.mean_exhaustive_checks / r.mean_pruned_checks, 1.0, 1) + "x | " +
-        Num(r.pruned_time_s.p50, 1e6, 1) + " | " + Num(r.exhaustive_time_s.p50, 1e6, 0) + " |");
+    out.push_back("| " + r.set + " | " + FormatNumber(r.mean_candidates, 1.0, 1) + " | " +
+                  FormatNumber(r.mean_pruned_checks, 1.0, 0) + " | " +
+                  FormatNumber(r.mean_exhaustive_checks, 1.0, 0) + " | " +
+                  FormatNumber(r.mean_exhaustive_checks / r.mean_pruned_checks, 1.0, 1) + "x | " +
+                  FormatNumber(r.pruned_time_s.p50, 1e6, 1) + " | " +
+                  FormatNumber(r.exhaustive_time_s.p50, 1e6, 0) + " |");
   }
   return out;
 }

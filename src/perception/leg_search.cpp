@@ -13,6 +13,17 @@ struct Neighbour {
   double dist;
 };
 
+bool FitsSomeSide(double d, const std::vector<geometry::ShelfModel>& models, double tolerance_m) {
+  for (const auto& m : models) {
+    if (std::abs(d - m.length_m) < tolerance_m || std::abs(d - m.width_m) < tolerance_m) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 // True when the corner `v` with legs `a` and `b` is a right angle: |ab| ~ sqrt(|va|^2 + |vb|^2).
 bool IsRightCorner(const Eigen::Vector2d& v, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                    double tolerance_m) {
@@ -32,17 +43,6 @@ bool FitsSomeModel(double s1, double s2, const std::vector<geometry::ShelfModel>
   }
   return false;
 }
-
-bool FitsSomeSide(double d, const std::vector<geometry::ShelfModel>& models, double tolerance_m) {
-  for (const auto& m : models) {
-    if (std::abs(d - m.length_m) < tolerance_m || std::abs(d - m.width_m) < tolerance_m) {
-      return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
 
 std::vector<LegSet> SearchLegSets(const std::vector<Eigen::Vector2d>& centres,
                                   const std::vector<geometry::ShelfModel>& models,

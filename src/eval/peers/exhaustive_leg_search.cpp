@@ -6,31 +6,13 @@
 namespace shelfdock::eval::peers {
 namespace {
 
-bool IsRightCorner(const Eigen::Vector2d& v, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                   double tolerance_m) {
-  const double legs = std::sqrt((a - v).squaredNorm() + (b - v).squaredNorm());
-  return std::abs((a - b).norm() - legs) < tolerance_m;
-}
-
-/// True when sides s1, s2 meeting at a corner are (L, W) or (W, L) of some model.
-bool FitsSomeModel(double s1, double s2, const std::vector<geometry::ShelfModel>& models,
-                   double tolerance_m) {
-  for (const auto& m : models) {
-    const bool lw =
-        std::abs(s1 - m.length_m) < tolerance_m && std::abs(s2 - m.width_m) < tolerance_m;
-    const bool wl =
-        std::abs(s1 - m.width_m) < tolerance_m && std::abs(s2 - m.length_m) < tolerance_m;
-    if (lw || wl) return true;
-  }
-  return false;
-}
-
 /// The corner v with legs a and b: two sides of one model at a right angle.
 bool IsShelfCorner(const Eigen::Vector2d& v, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                    const std::vector<geometry::ShelfModel>& models,
                    const perception::LegSearchConfig& config) {
-  return FitsSomeModel((a - v).norm(), (b - v).norm(), models, config.pair_tolerance_m) &&
-         IsRightCorner(v, a, b, config.pythagoras_tolerance_m);
+  return perception::FitsSomeModel((a - v).norm(), (b - v).norm(), models,
+                                   config.pair_tolerance_m) &&
+         perception::IsRightCorner(v, a, b, config.pythagoras_tolerance_m);
 }
 
 }  // namespace
