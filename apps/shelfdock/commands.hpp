@@ -19,5 +19,9 @@ void AddSimulateCommand(CLI::App& app, int* exit_code);
 void AddMarkerCommand(CLI::App& app, int* exit_code);
 void AddDockCommands(CLI::App& app, int* exit_code);  ///< dock and eval-docking
 void AddViewCommand(CLI::App& app, int* exit_code);   ///< view: records -> replay page
+/// `eval` with its sub-subcommands `paper` and `peers` (cmd_eval*.cpp).
+void AddEvalCommands(CLI::App& app, int* exit_code);
+void AddEvalPaperCommand(CLI::App& eval, int* exit_code);
+void AddEvalPeersCommand(CLI::App& eval, int* exit_code);
 
 }  // namespace shelfdock::app

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   shelfdock::app::AddMarkerCommand(app, &exit_code);
   shelfdock::app::AddDockCommands(app, &exit_code);
   shelfdock::app::AddViewCommand(app, &exit_code);
+  shelfdock::app::AddEvalCommands(app, &exit_code);
 
   try {
     app.parse(argc, argv);

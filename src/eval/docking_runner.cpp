@@ -154,7 +154,17 @@ DockingRun RunDocking(const sim::Scenario& scenario,
     const bool have_scan = readings.scan != nullptr;
 
     const docking::Phase phase_before = docker.phase();
+    const int detections_before = docker.detections();
     const docking::Command cmd = docker.Step(obs);
+    if (config.keep_recognitions && docker.detections() != detections_before &&
+        docker.last_detection_odom() && std::isfinite(docker.docking_start_time())) {
+      const Pose2 T_world_odom = robot.T_world_base() * obs.T_odom_base.inverse();
+      const Pose2 T_map_odom = obs.T_map_base_estimate * obs.T_odom_base.inverse();
+      const Pose2& detected = *docker.last_detection_odom();
+      const Pose2& fused = docker.shelf_tracker().estimate();
+      run.recognitions.push_back({t, T_world_odom * detected, T_world_odom * fused,
+                                  T_map_odom * detected, T_map_odom * fused});
+    }
     AddPhaseTime(docker.done() ? phase_before : docker.phase(), cmd, dt, &run.phases);
 
     camera_on = cmd.camera_on;

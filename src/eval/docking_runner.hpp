@@ -30,6 +30,9 @@ struct RunConfig {
   sim::SensorRigConfig sensors;   ///< sensor timing and injected failures
   double max_sim_time_s = 120.0;  ///< [s] hard stop of the simulation loop
   bool record = false;            ///< keep one RecordFrame per control step
+  /// Keep every detection accepted after the docking area's entry and the fused estimate after
+  /// it (DockingRun::recognitions).
+  bool keep_recognitions = false;
   /// Start here instead of the scenario's robot_start (a start-anywhere sweep).
   std::optional<geometry::Pose2> T_map_robot_start;
 };
@@ -72,6 +75,18 @@ struct PhaseTimes {
   int adjustments = 0;        ///< fine adjustments made
 };
 
+/// One accepted detection during a run and the fused shelf estimate right after it, placed in
+/// the world with the TRUE robot pose of that instant (the recognition's own error, as a robot
+/// with perfect localisation would map it) and in the map with the robot's own localisation
+/// estimate (what the paper's Fig. 7 plots: "project this result ... onto the map").
+struct Recognition {
+  double t_s = 0.0;  ///< [s] simulated time
+  geometry::Pose2 T_world_shelf_detected;
+  geometry::Pose2 T_world_shelf_fused;
+  geometry::Pose2 T_map_shelf_detected;
+  geometry::Pose2 T_map_shelf_fused;
+};
+
 struct DockingRun {
   docking::Outcome outcome;
   docking::Method method = docking::Method::kContinuous;
@@ -86,6 +101,7 @@ struct DockingRun {
   double min_leg_clearance_m = 1e9;  ///< [m] true footprint to true legs over the whole run
   PhaseTimes phases;
   std::vector<RecordFrame> record;
+  std::vector<Recognition> recognitions;  ///< only with RunConfig::keep_recognitions
 };
 
 /// Runs one docking in the simulator: world, LiDAR (motion-skewed scans), robot (limits,

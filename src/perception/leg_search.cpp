@@ -13,6 +13,17 @@ struct Neighbour {
   double dist;
 };
 
+bool FitsSomeSide(double d, const std::vector<geometry::ShelfModel>& models, double tolerance_m) {
+  for (const auto& m : models) {
+    if (std::abs(d - m.length_m) < tolerance_m || std::abs(d - m.width_m) < tolerance_m) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 // True when the corner `v` with legs `a` and `b` is a right angle: |ab| ~ sqrt(|va|^2 + |vb|^2).
 bool IsRightCorner(const Eigen::Vector2d& v, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                    double tolerance_m) {
@@ -33,20 +44,9 @@ bool FitsSomeModel(double s1, double s2, const std::vector<geometry::ShelfModel>
   return false;
 }
 
-bool FitsSomeSide(double d, const std::vector<geometry::ShelfModel>& models, double tolerance_m) {
-  for (const auto& m : models) {
-    if (std::abs(d - m.length_m) < tolerance_m || std::abs(d - m.width_m) < tolerance_m) {
-      return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
-
 std::vector<LegSet> SearchLegSets(const std::vector<Eigen::Vector2d>& centres,
                                   const std::vector<geometry::ShelfModel>& models,
-                                  const LegSearchConfig& config) {
+                                  const LegSearchConfig& config, LegSearchCounts* counts) {
   std::vector<LegSet> sets;
   const int n = static_cast<int>(centres.size());
   if (n < 3 || models.empty()) return sets;
@@ -59,6 +59,7 @@ std::vector<LegSet> SearchLegSets(const std::vector<Eigen::Vector2d>& centres,
   std::iota(by_x.begin(), by_x.end(), 0);
   std::sort(by_x.begin(), by_x.end(),
             [&](int a, int b) { return centres[a].x() < centres[b].x(); });
+  long long checks = 0;
   std::vector<std::vector<Neighbour>> neighbours(n);
   for (int s = 0; s < n; ++s) {
     const int i = by_x[s];
@@ -66,6 +67,7 @@ std::vector<LegSet> SearchLegSets(const std::vector<Eigen::Vector2d>& centres,
       const int j = by_x[t];
       if (centres[j].x() - centres[i].x() > longest_side + tol) break;
       const double d = (centres[j] - centres[i]).norm();
+      ++checks;
       if (!FitsSomeSide(d, models, tol)) continue;
       neighbours[i].push_back({j, d});
       neighbours[j].push_back({i, d});
@@ -88,6 +90,7 @@ std::vector<LegSet> SearchLegSets(const std::vector<Eigen::Vector2d>& centres,
         const int a = nb[p].index;
         const int b = nb[q].index;
         // Criterion 2: two sides of one model meeting at a right angle.
+        ++checks;
         if (!FitsSomeModel(nb[p].dist, nb[q].dist, models, tol)) continue;
         if (!IsRightCorner(centres[v], centres[a], centres[b], ptol)) continue;
 
@@ -96,6 +99,7 @@ std::vector<LegSet> SearchLegSets(const std::vector<Eigen::Vector2d>& centres,
         double best = r4;
         for (int k = 0; k < n; ++k) {
           if (k == v || k == a || k == b) continue;
+          ++checks;
           const double d = (centres[k] - predicted).norm();
           if (d < best) {
             best = d;
@@ -113,6 +117,7 @@ std::vector<LegSet> SearchLegSets(const std::vector<Eigen::Vector2d>& centres,
       }
     }
   }
+  if (counts != nullptr) counts->checks += checks;
   return sets;
 }
 

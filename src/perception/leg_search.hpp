@@ -18,6 +18,19 @@ struct LegSet {
   int count = 0;  ///< 3 or 4
 };
 
+/// Work done by a search, for comparing it with an exhaustive one.
+struct LegSearchCounts {
+  long long checks = 0;  ///< candidate checks: pair lengths, corners and fourth-leg tests
+};
+
+/// True when the corner `v` with legs `a` and `b` is a right angle: |ab| ~ sqrt(|va|^2 + |vb|^2).
+bool IsRightCorner(const Eigen::Vector2d& v, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                   double tolerance_m);
+
+/// True when the sides (s1, s2) meeting at a corner are (L, W) or (W, L) of some model.
+bool FitsSomeModel(double s1, double s2, const std::vector<geometry::ShelfModel>& models,
+                   double tolerance_m);
+
 /// Paper 3.2, pruned search: (1) a pair's length must fit a side of some model, (2) a triangle
 /// with two such sides must nearly satisfy Pythagoras and match one model's (L, W), (3) a
 /// fourth leg near the predicted corner is accepted only if every three of the four legs form
@@ -25,6 +38,6 @@ struct LegSet {
 /// the number of near neighbours, not with n^3. Sets are unique.
 std::vector<LegSet> SearchLegSets(const std::vector<Eigen::Vector2d>& centres,
                                   const std::vector<geometry::ShelfModel>& models,
-                                  const LegSearchConfig& config);
+                                  const LegSearchConfig& config, LegSearchCounts* counts = nullptr);
 
 }  // namespace shelfdock::perception

@@ -1,0 +1,24 @@
+#pragma once
+
+// Reports of `shelfdock eval peers`: the accuracy and time table per scene set with each peer's
+// ratio to shelfdock, the search-work table, as Markdown lines, and every number as JSON.
+// Units in JSON: m, rad, s; tables print mm, mrad, us.
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "eval/peer_comparison.hpp"
+
+namespace shelfdock::io {
+
+std::vector<std::string> PeerTableLines(const std::vector<eval::PeerRow>& rows);
+std::vector<std::string> SearchTableLines(const std::vector<eval::SearchRow>& rows);
+/// {"accuracy": [{"set", "method", "scenes", "successes", "success_rate", "position_m": {p50,
+/// p95}, "heading_rad", "time_s", "ratio_to_shelfdock": {"position_p95", "heading_p95",
+/// "time_p50"}}], "search": [...]}.
+nlohmann::json PeersJson(const std::vector<eval::PeerRow>& rows,
+                         const std::vector<eval::SearchRow>& search);
+
+}  // namespace shelfdock::io
