@@ -72,6 +72,7 @@ struct PhaseTimes {
   int adjustments = 0;        ///< fine adjustments made
 };
 
+/// One simulated docking: its outcome and measured errors and times.
 struct DockingRun {
   docking::Outcome outcome;
   docking::Method method = docking::Method::kContinuous;
