@@ -4,4 +4,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 bash scripts/check_format.sh
+# tools/mcap's Node packages, exactly as locked (for the MCAP round-trip test).
+(cd tools/mcap && npm ci --no-audit --no-fund --loglevel=error)
 ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600
