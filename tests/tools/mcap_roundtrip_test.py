@@ -80,9 +80,13 @@ def main():
             checked += len(got)
             print(f"{bag} {topic}: {len(got)} scans identical after the round trip")
 
-    # Bad input: exit 2 and the message names what is wrong.
+    # Bad input: exit 2 and the message names what is wrong (a recording cut off in the middle
+    # has no summary to index it by).
+    cut = work / "cut.mcap"
+    cut.write_bytes(mcap.read_bytes()[: mcap.stat().st_size // 2])
     for cmd, needle in [([node, to_scans, work / "missing.mcap"], "missing.mcap"),
                         ([node, to_scans, ros1], "not a readable MCAP file"),
+                        ([node, to_scans, cut], "without its summary"),
                         ([node, to_scans, mcap, "--topic", "/nope"], "/nope"),
                         ([node, to_mcap, "--scans", work / "missing.jsonl", "--topic", "/s",
                           "--out", work / "x.mcap"], "missing.jsonl")]:

@@ -35,6 +35,11 @@ export async function openMcap(file) {
     return { reader, close: () => handle.close() };
   } catch (err) {
     await handle.close();
-    throw new Error(`${file}: not a readable MCAP file (${err.message})`);
+    // Indexed reading needs the summary a finished recording ends with; a recording cut off
+    // (crash, power loss) lacks it: `mcap recover` (the MCAP CLI) rewrites it whole.
+    throw new Error(
+      `${file}: not a readable MCAP file, or one without its summary (a recording cut off: ` +
+        `repair it with \`mcap recover\`) (${err.message})`,
+    );
   }
 }
