@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev libapriltag-dev
   librosbag-storage-dev libsensor-msgs-dev pluginlib-dev
   chromium
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 # Node.js and npm run the browser tests (tests/browser). A machine may already have them from
 # elsewhere (e.g. NodeSource's nodejs, which bundles npm): take Debian's only when none is there.
@@ -18,6 +19,14 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+
+# Node.js and npm for tools/mcap (ROS 2 recordings): Debian's, unless a node with npm is already
+# on PATH (a NodeSource node ships its own npm, and Debian's npm package would conflict with it).
+if ! command -v npm >/dev/null 2>&1; then
+  for p in nodejs npm; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install_deps: all ${#packages[@]} packages present"

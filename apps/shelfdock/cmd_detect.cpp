@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "config_paths.hpp"
+#include "io/detection_json.hpp"
 #include "io/detector_config_yaml.hpp"
 #include "io/explain_json.hpp"
 #include "io/html_page.hpp"
@@ -27,7 +29,7 @@ namespace shelfdock::app {
 namespace {
 
 struct DetectOptions {
-  std::string models;
+  std::string models = DefaultConfig("models.yaml");
   std::string scan;
   std::string params;
   std::string preset;
@@ -66,81 +68,6 @@ std::optional<geometry::Pose2> ParsePose(const std::string& text, const std::str
   return geometry::Pose2(v[0], v[1], v[2]);
 }
 
-nlohmann::json PoseJson(const geometry::Pose2& T) {
-  return {{"x", T.x}, {"y", T.y}, {"yaw", T.yaw}};
-}
-
-nlohmann::json DetectionJson(const perception::Detection& d,
-                             const std::optional<geometry::Pose2>& T_base_lidar,
-                             const std::optional<geometry::Pose2>& T_map_base) {
-  nlohmann::json legs = nlohmann::json::array();
-  for (const auto& l : d.legs) legs.push_back({l.x(), l.y()});
-  nlohmann::json cov = nlohmann::json::array();
-  for (int r = 0; r < 3; ++r)
-    cov.push_back({d.covariance(r, 0), d.covariance(r, 1), d.covariance(r, 2)});
-  nlohmann::json j = {{"model", d.model},
-                      {"x", d.T_lidar_shelf.x},
-                      {"y", d.T_lidar_shelf.y},
-                      {"yaw", d.T_lidar_shelf.yaw},
-                      {"length", d.length_m},
-                      {"width", d.width_m},
-                      {"legs", legs},
-                      {"legs_used", d.legs_used},
-                      {"err_sum", d.err_sum},
-                      {"cost", d.cost},
-                      {"covariance", cov},
-                      {"confidence", d.confidence},
-                      {"legs_visible", d.legs_visible},
-                      {"legs_occluded", d.legs_occluded},
-                      {"interior_points", d.interior_points},
-                      {"leg_width_error", d.leg_width_error_m},
-                      {"leg_width_bias", d.leg_width_bias_m}};
-  if (T_base_lidar) j["base"] = PoseJson(perception::ShelfInBase(d, *T_base_lidar));
-  if (T_map_base) {
-    j["map"] =
-        PoseJson(perception::ShelfInMap(d, T_base_lidar.value_or(geometry::Pose2()), *T_map_base));
-  }
-  return j;
-}
-
-nlohmann::json StatsJson(const perception::DetectionStats& s) {
-  return {{"valid_points", s.valid_points},
-          {"roi_points", s.roi_points},
-          {"clusters", s.clusters},
-          {"trailing_removed", s.trailing_removed},
-          {"leg_candidates", s.leg_candidates},
-          {"leg_sets", s.leg_sets},
-          {"model_pairs", s.model_pairs},
-          {"hypotheses", s.hypotheses},
-          {"rejected",
-           {{"fit", s.rejected.fit},
-            {"model", s.rejected.model},
-            {"three_leg_error", s.rejected.three_leg_error},
-            {"leg_seen_through", s.rejected.leg_seen_through},
-            {"low_confidence", s.rejected.low_confidence},
-            {"lost_legs", s.rejected.lost_legs}}}};
-}
-
-nlohmann::json HypothesisJson(const perception::HypothesisRecord& h) {
-  nlohmann::json legs = nlohmann::json::array();
-  for (const auto& l : h.legs) legs.push_back({l.x(), l.y()});
-  return {{"model", h.model},
-          {"verdict", perception::VerdictName(h.verdict)},
-          {"x", h.T_lidar_shelf.x},
-          {"y", h.T_lidar_shelf.y},
-          {"yaw", h.T_lidar_shelf.yaw},
-          {"legs", legs},
-          {"err_sum", h.err_sum},
-          {"confidence", h.confidence},
-          {"legs_visible", h.legs_visible},
-          {"legs_occluded", h.legs_occluded},
-          {"legs_seen_through", h.legs_seen_through},
-          {"interior_points", h.interior_points},
-          {"foreign_legs_inside", h.foreign_legs_inside},
-          {"leg_width_error", h.leg_width_error_m},
-          {"leg_width_bias", h.leg_width_bias_m}};
-}
-
 int RunDetect(const DetectOptions& opt) {
   // Parse everything before detecting anything: bad input never yields partial output.
   const auto preset = ParsePose(opt.preset, "--preset");
@@ -161,13 +88,9 @@ int RunDetect(const DetectOptions& opt) {
   for (const auto& scan : scans) {
     const perception::DetectionResult result =
         detector.Detect(scan, preset, opt.explain || !opt.html.empty());
-    nlohmann::json dets = nlohmann::json::array();
-    for (const auto& d : result.detections)
-      dets.push_back(DetectionJson(d, T_base_lidar, T_map_base));
-    nlohmann::json out{{"detections", dets}, {"stats", StatsJson(result.stats)}};
-    nlohmann::json hyps = nlohmann::json::array();
-    for (const auto& h : result.hypotheses) hyps.push_back(HypothesisJson(h));
-    if (opt.explain) out["hypotheses"] = hyps;
+    nlohmann::json out = io::DetectionResultToJson(result, true, T_base_lidar, T_map_base);
+    const nlohmann::json hyps = out["hypotheses"];
+    if (!opt.explain) out.erase("hypotheses");
     std::cout << out.dump() << "\n";
     if (!opt.html.empty()) {
       nlohmann::json page_scan = io::ExplainGeometryJson(scan, detector, preset);
@@ -197,8 +120,7 @@ void AddDetectCommand(CLI::App& app, int* exit_code) {
   auto opt = std::make_shared<DetectOptions>();
   CLI::App* cmd =
       app.add_subcommand("detect", "detect shelves in LiDAR scans (one JSON line per scan)");
-  cmd->add_option("--models", opt->models, "shelf models YAML (e.g. config/models.yaml)")
-      ->required();
+  cmd->add_option("--models", opt->models, "shelf models YAML")->capture_default_str();
   cmd->add_option("--scan", opt->scan, "scans: JSON object, array or JSON Lines")->required();
   cmd->add_option("--preset", opt->preset,
                   "expected shelf pose X,Y,YAW in the lidar frame [m,m,rad]");

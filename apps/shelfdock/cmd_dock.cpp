@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "config_paths.hpp"
 #include "eval/docking_runner.hpp"
 #include "eval/monte_carlo.hpp"
 #include "eval/random_start.hpp"
@@ -26,8 +27,8 @@ namespace shelfdock::app {
 namespace {
 
 struct DockOptions {
-  std::string scenario = "config/scenarios/paper_docking.yaml";
-  std::string models = "config/models.yaml";
+  std::string scenario = DefaultConfig("scenarios/paper_docking.yaml");
+  std::string models = DefaultConfig("models.yaml");
   std::string config;
   std::string lidar;
   std::string robot;

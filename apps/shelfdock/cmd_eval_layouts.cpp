@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "config_paths.hpp"
 #include "eval/layout_summary.hpp"
 #include "eval/layout_sweep.hpp"
 #include "io/detector_config_yaml.hpp"
@@ -25,14 +26,14 @@
 namespace shelfdock::app {
 namespace {
 
-const std::vector<std::string> kDefaultLidarFiles = {"config/lidar_tim571.yaml",
-                                                     "config/lidar_ust10lx.yaml"};
+const std::vector<std::string> kDefaultLidarFiles = {DefaultConfig("lidar_tim571.yaml"),
+                                                     DefaultConfig("lidar_ust10lx.yaml")};
 
 struct EvalLayoutsOptions {
   int scenes_per_class = eval::LayoutSweepConfig{}.scenes_per_class;
   std::uint64_t seed0 = eval::LayoutSweepConfig{}.seed0;
   std::vector<std::string> classes;
-  std::string models = "config/models.yaml";
+  std::string models = DefaultConfig("models.yaml");
   std::string params;
   std::vector<std::string> lidars;
   std::string json;

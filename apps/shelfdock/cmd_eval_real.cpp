@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "config_paths.hpp"
 #include "io/detector_config_yaml.hpp"
 #include "io/models_yaml.hpp"
 #include "io/rosbag_scans.hpp"
@@ -23,7 +24,7 @@ namespace {
 struct EvalRealOptions {
   std::vector<std::string> bags;
   std::string topic;
-  std::string models = "config/models.yaml";
+  std::string models = DefaultConfig("models.yaml");
   std::string params;
 };
 

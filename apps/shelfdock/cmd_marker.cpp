@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "config_paths.hpp"
 #include "io/camera_yaml.hpp"
 #include "io/input_error.hpp"
 #include "io/pgm.hpp"
@@ -31,7 +32,7 @@ namespace {
 struct MarkerOptions {
   std::string image;
   std::string render;
-  std::string camera = "config/camera.yaml";
+  std::string camera = DefaultConfig("camera.yaml");
   std::string offset = "0,0,0";
   int id = 0;
   std::uint64_t seed = 1;

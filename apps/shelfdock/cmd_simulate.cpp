@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "config_paths.hpp"
 #include "geometry/angle.hpp"
 #include "io/input_error.hpp"
 #include "io/lidar_config_yaml.hpp"
@@ -29,7 +30,7 @@ struct SimulateOptions {
   std::string velocity = "0,0";
   std::uint64_t seed = 1;
   int count = 1;
-  std::string models = "config/models.yaml";
+  std::string models = DefaultConfig("models.yaml");
   std::string lidar;
   std::string out;
   std::string truth;

@@ -6,11 +6,13 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "config_paths.hpp"
 #include "io/input_error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"shelfdock: find a shelf with a 2D LiDAR and dock under it"};
   app.require_subcommand(1);
+  app.footer(shelfdock::app::ConfigSearchHelp());  // subcommands added below inherit it
   int exit_code = shelfdock::app::kExitOk;
   shelfdock::app::AddDetectCommand(app, &exit_code);
   shelfdock::app::AddBagCommand(app, &exit_code);

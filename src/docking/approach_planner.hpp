@@ -20,8 +20,10 @@ enum class ApproachKind {
   kMoveOut,         ///< drive straight along the heading (forward or reversing) to where a turn
                     ///< is free, then plan again (e.g. half under a shelf)
 };
+/// The kind's snake_case name (records, events).
 std::string_view ToString(ApproachKind kind);
 
+/// How the robot reaches the docking area's entry.
 struct ApproachPlan {
   bool ok = false;
   ApproachKind kind = ApproachKind::kDockNow;

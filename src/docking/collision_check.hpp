@@ -16,6 +16,7 @@ struct LegDisc {
   double radius_m = 0.0;   ///< [m]
 };
 
+/// The closest approach of the robot's footprint along a path.
 struct ClearanceResult {
   double min_clearance_m = 1e9;  ///< [m] smallest footprint-to-obstacle distance along the path
   std::size_t worst_index = 0;   ///< path sample where it occurs

@@ -21,6 +21,7 @@
 
 namespace shelfdock::docking {
 
+/// Continuous docking (the paper's) or the stop-and-recognise baseline.
 enum class Method { kContinuous, kStopAndRecognise };
 std::string_view ToString(Method method);
 
@@ -45,13 +46,15 @@ struct Observations {
   bool lift_done = false;
 };
 
+/// The Docker's stage; ToString gives the record's name.
 enum class Phase { kApproach, kDock, kStand, kVerify, kAdjust, kLift, kAbort, kDone };
 std::string_view ToString(Phase phase);
 
+/// What the Docker asks of the robot for one control step.
 struct Command {
-  VelocityCommand velocity;
-  bool camera_on = false;
-  bool start_lift = false;
+  VelocityCommand velocity;         ///< drive command
+  bool camera_on = false;           ///< the upward camera should look for the code
+  bool start_lift = false;          ///< raise the lift now
   std::vector<std::string> events;  ///< what happened this step, for the record
 };
 

@@ -27,6 +27,7 @@ struct DockingArea {
   double entry_distance_m = 0.0;  ///< [m] the entry lies this far behind the goal
 };
 
+/// The chosen docking area, or why none fits.
 struct DockingAreaResult {
   std::optional<DockingArea> area;
   std::string reason;  ///< why there is none

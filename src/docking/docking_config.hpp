@@ -110,6 +110,7 @@ struct BaselineConfig {
   int standing_scans = 5;           ///< scans fused while standing
 };
 
+/// All docking parameters (config/docking.yaml), one struct per part.
 struct DockingConfig {
   PlannerConfig planner;
   ControllerConfig controller;

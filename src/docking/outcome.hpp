@@ -25,6 +25,7 @@ enum class OutcomeCode {
 /// Stable snake_case name, used in JSON output ("success", "shelf_not_found", ...).
 std::string_view ToString(OutcomeCode code);
 
+/// How a docking attempt ended: the code and a human-readable reason.
 struct Outcome {
   OutcomeCode code = OutcomeCode::kPending;
   std::string reason;  ///< one sentence for people

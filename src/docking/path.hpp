@@ -6,6 +6,7 @@
 
 namespace shelfdock::docking {
 
+/// One sample of a planned path.
 struct PathPoint {
   geometry::Pose2 pose;    ///< in the frame the path was planned in (map or odom)
   double s = 0.0;          ///< [m] arc length from the start

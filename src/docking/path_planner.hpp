@@ -7,6 +7,7 @@
 
 namespace shelfdock::docking {
 
+/// A planned path, or why there is none.
 struct PlanResult {
   bool ok = false;
   Path path;                ///< valid when ok

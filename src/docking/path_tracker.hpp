@@ -5,11 +5,13 @@
 
 namespace shelfdock::docking {
 
+/// A (v, w) command to the base.
 struct VelocityCommand {
   double v_mps = 0.0;    ///< [m/s] forward speed
   double w_radps = 0.0;  ///< [rad/s] yaw rate
 };
 
+/// The tracker's command and where the robot stands against the path.
 struct TrackingStatus {
   VelocityCommand command;
   bool reached = false;        ///< stopped at the goal (arc length reached)

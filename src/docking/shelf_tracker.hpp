@@ -7,6 +7,7 @@
 
 namespace shelfdock::docking {
 
+/// What a detection did to the shelf estimate.
 enum class TrackUpdate { kInitialised, kFused, kRejected, kReinitialised };
 
 /// Fuses shelf detections over time in the odometry frame. The shelf stands still, so the state

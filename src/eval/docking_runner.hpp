@@ -87,6 +87,7 @@ struct Recognition {
   geometry::Pose2 T_map_shelf_fused;
 };
 
+/// One simulated docking: its outcome and measured errors and times.
 struct DockingRun {
   docking::Outcome outcome;
   docking::Method method = docking::Method::kContinuous;

@@ -42,6 +42,7 @@ enum class SceneOutcome {
   kClutterDetections,  ///< no shelf; something detected
 };
 
+/// The outcome's snake_case name (reports).
 std::string_view SceneOutcomeName(SceneOutcome outcome);
 
 /// The detector's first answer, against the truth.

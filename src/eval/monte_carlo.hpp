@@ -9,6 +9,7 @@ namespace shelfdock::eval {
 /// Linearly interpolated quantile q in [0, 1] of `values` (NaN when empty).
 double Quantile(std::vector<double> values, double q);
 
+/// Percentiles of an absolute error over runs.
 struct AbsErrorStats {
   double p95 = 0.0;  ///< of |error|
   double p99 = 0.0;
@@ -24,6 +25,7 @@ struct AccuracyBands {
   double after_yaw_rad = 0.005;
 };
 
+/// One docking method's figures over many seeded runs.
 struct MethodSummary {
   int runs = 0;
   int successes = 0;
@@ -38,6 +40,7 @@ struct MethodSummary {
   double mean_adjustments = 0.0;     ///< per successful run
 };
 
+/// The figures of a method's runs.
 MethodSummary Summarise(const std::vector<DockingRun>& runs, const AccuracyBands& bands = {});
 
 }  // namespace shelfdock::eval

@@ -16,6 +16,7 @@ inline double WrapAngle(double angle_rad) {
 /// Signed smallest difference a - b, in [-pi, pi).
 inline double AngleDiff(double a_rad, double b_rad) { return WrapAngle(a_rad - b_rad); }
 
+/// Degrees to radians and back.
 inline constexpr double DegToRad(double deg) { return deg * std::numbers::pi / 180.0; }
 inline constexpr double RadToDeg(double rad) { return rad * 180.0 / std::numbers::pi; }
 

@@ -7,6 +7,7 @@
 
 namespace shelfdock::geometry {
 
+/// Cross-section of a shelf leg (round legs: length = width = diameter).
 enum class LegShape { kRectangle, kCircle };
 
 /// A leg's cross-section. For round legs length == width == diameter.

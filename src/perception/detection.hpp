@@ -65,6 +65,7 @@ enum class Verdict {
   kLowConfidence,   ///< RejectionCounts::low_confidence
   kLostLegs,        ///< RejectionCounts::lost_legs
 };
+/// The verdict's snake_case name, as in `detect --explain` and `stats.rejected`.
 const char* VerdictName(Verdict verdict);
 
 /// One hypothesis as the detector saw it, for explaining a scan ("why was my shelf not found").
@@ -84,6 +85,7 @@ struct HypothesisRecord {
   Verdict verdict = Verdict::kFit;
 };
 
+/// Everything Detector::Detect returns for one scan.
 struct DetectionResult {
   std::vector<Detection> detections;  ///< best first; with a preset, nearest to it first
   DetectionStats stats;

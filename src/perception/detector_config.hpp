@@ -88,6 +88,7 @@ struct EvidenceConfig {
   double min_confidence = 0.3;           ///< [-] below this a hypothesis is not returned
 };
 
+/// All detector parameters, one struct per stage (config/detector.yaml).
 struct DetectorConfig {
   PreprocessConfig preprocess;
   LegSearchConfig leg_search;

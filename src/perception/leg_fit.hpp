@@ -10,6 +10,7 @@
 
 namespace shelfdock::perception {
 
+/// One fitted leg (paper 3.3).
 struct LegFitResult {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< [m] fitted leg centre, lidar frame
   double axis_yaw = 0.0;       ///< [rad] leg section's x axis (G_h side) used by the fit
@@ -24,6 +25,7 @@ struct PcaDirection {
   double yaw = 0.0;         ///< [rad]
   double anisotropy = 1.0;  ///< [-] largest / smallest eigenvalue
 };
+/// Principal axis of the points (PCA) and how elongated they are.
 PcaDirection PrincipalDirection(const std::vector<ScanPoint>& points);
 
 /// Paper 3.3: the leg centre from its points by nonlinear least squares (Ceres). Round legs use

@@ -17,7 +17,7 @@ namespace shelfdock::perception {
 // A beam that misses the predicted section gets the range residual at its closest approach
 // plus the miss distance, so the residual is continuous across the silhouette.
 
-// Round leg: b = u.c along the beam, e = u x c across it; hit at t = b - sqrt(r^2 - e^2).
+/// Round leg: b = u.c along the beam, e = u x c across it; hit at t = b - sqrt(r^2 - e^2).
 template <typename T>
 void CircleRayResidual(const T* c, double ux, double uy, double range, double radius, T* out) {
   const T b = T(ux) * c[0] + T(uy) * c[1];
@@ -35,7 +35,7 @@ void CircleRayResidual(const T* c, double ux, double uy, double range, double ra
   }
 }
 
-// Rectangular leg: slab test in the leg's axes (x along G_h).
+/// Rectangular leg: slab test in the leg's axes (x along G_h).
 template <typename T>
 void BoxRayResidual(const T* c, double ux, double uy, double range, const T& cos_a, const T& sin_a,
                     double half_x, double half_y, T* out) {

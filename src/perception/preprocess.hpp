@@ -38,6 +38,7 @@ struct ClusterSpan {
   std::size_t size() const { return end - begin; }
 };
 
+/// What preprocessing (paper 3.1) hands the leg search.
 struct PreprocessOutput {
   std::vector<ScanPoint> points;    ///< valid points after the trailing-point filter
   std::vector<ClusterSpan> spans;   ///< every cluster of `points` (inside the ROI or not)

@@ -11,6 +11,7 @@
 
 namespace shelfdock::perception {
 
+/// The shelf pose fitted to its leg centres (paper 3.4).
 struct ShelfFitResult {
   geometry::Pose2 T_lidar_shelf;  ///< centre and heading (x along the long side; pi-ambiguous)
   double cost = 0.0;              ///< [m^2] final robustified cost, 0.5 sum rho(|r|^2)

@@ -21,6 +21,7 @@ struct BeamTruth {
   bool mixed = false;  ///< the footprint straddled a depth edge
 };
 
+/// A simulated scan and, per beam, what it hit (for ground truth and tests).
 struct LabelledScan {
   geometry::LaserScan scan;
   std::vector<BeamTruth> truth;  ///< one per beam

@@ -70,6 +70,7 @@ struct ConfigError {
   std::string field;
   std::string requirement;
 };
+/// The first impossible value of the config, if any (names the key).
 std::optional<ConfigError> Validate(const LidarConfig& config);
 
 /// A config with every flaw switched off: exact ranges, no dropouts, no footprint, no tilt.
