@@ -29,13 +29,18 @@ int RunBag(const BagOptions& opt) {
     std::cout << nlohmann::json{{"bag", opt.bag}, {"laser_scan_topics", topics}}.dump() << "\n";
     return kExitOk;
   }
-  const auto scans = io::ReadBagScans(opt.bag, opt.topic);
   std::ofstream out(opt.out);
   if (!out) throw io::InputError(opt.out, "", "cannot write file");
-  for (const auto& scan : scans) out << io::ScanToJson(scan).dump() << "\n";
+  // One scan in memory at a time, whatever the bag's length.
+  const std::size_t scans = io::ForEachBagScan(
+      opt.bag, opt.topic, [&out](const auto& scan) { out << io::ScanToJson(scan).dump() << "\n"; });
+  if (scans == 0) {
+    throw io::InputError(opt.bag, opt.topic.empty() ? "topics" : opt.topic,
+                         "no sensor_msgs/LaserScan messages");
+  }
   std::cout << nlohmann::json{{"bag", opt.bag},
                               {"topic", opt.topic},
-                              {"scans", scans.size()},
+                              {"scans", scans},
                               {"out", opt.out}}
                    .dump()
             << "\n";

@@ -1,22 +1,23 @@
-// `shelfdock detect`: runs the shelf detector on every scan of a file and prints one JSON line
-// per scan: {"detections": [...], "stats": {...}}, detections best first, in the scan's frame,
-// plus "base"/"map" poses when --extrinsic / --robot-pose are given.
+// `shelfdock detect`: runs the shelf detector on every scan of a file (or of standard input,
+// `--scan -`, streamed) and prints one JSON line per scan: {"detections": [...], "stats": {...}},
+// detections best first, in the scan's frame, plus "base"/"map" poses when --extrinsic /
+// --robot-pose are given.
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "io/detector_config_yaml.hpp"
 #include "io/input_error.hpp"
 #include "io/models_yaml.hpp"
 #include "io/scan_json.hpp"
+#include "io/scan_line_reader.hpp"
 #include "perception/detector.hpp"
 #include "perception/frames.hpp"
 
@@ -33,29 +34,9 @@ struct DetectOptions {
   bool explain = false;
 };
 
-// Parses "X,Y,YAW" (metres, metres, radians); `flag` names the option in errors.
-std::optional<geometry::Pose2> ParsePose(const std::string& text, const std::string& flag) {
+std::optional<geometry::Pose2> OptionalPose(const std::string& text, const std::string& flag) {
   if (text.empty()) return std::nullopt;
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    std::size_t used = 0;
-    double d = 0.0;
-    try {
-      d = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != item.size() || !std::isfinite(d)) {
-      throw io::InputError("(command line)", flag, "expected X,Y,YAW as three finite numbers");
-    }
-    v.push_back(d);
-  }
-  if (v.size() != 3) {
-    throw io::InputError("(command line)", flag, "expected X,Y,YAW as three finite numbers");
-  }
-  return geometry::Pose2(v[0], v[1], v[2]);
+  return ParsePose(text, flag);
 }
 
 nlohmann::json PoseJson(const geometry::Pose2& T) {
@@ -131,30 +112,61 @@ nlohmann::json HypothesisJson(const perception::HypothesisRecord& h) {
           {"leg_width_error", h.leg_width_error_m}};
 }
 
-int RunDetect(const DetectOptions& opt) {
-  // Parse everything before detecting anything: bad input never yields partial output.
-  const auto preset = ParsePose(opt.preset, "--preset");
-  const auto T_base_lidar = ParsePose(opt.extrinsic, "--extrinsic");
-  const auto T_map_base = ParsePose(opt.robot_pose, "--robot-pose");
-  auto models = io::ReadShelfModels(opt.models);
-  const perception::DetectorConfig config =
-      opt.params.empty() ? perception::DetectorConfig{} : io::ReadDetectorConfig(opt.params);
-  const auto scans = io::ReadScans(opt.scan);
-  const perception::Detector detector(std::move(models), config);
+/// The detector and frames of one `detect` run, and the JSON line it prints per scan.
+struct DetectJob {
+  perception::Detector detector;
+  std::optional<geometry::Pose2> preset;
+  std::optional<geometry::Pose2> T_base_lidar;
+  std::optional<geometry::Pose2> T_map_base;
+  bool explain = false;
 
-  for (const auto& scan : scans) {
-    const perception::DetectionResult result = detector.Detect(scan, preset, opt.explain);
+  nlohmann::json Run(const geometry::LaserScan& scan) const {
+    const perception::DetectionResult result = detector.Detect(scan, preset, explain);
     nlohmann::json dets = nlohmann::json::array();
     for (const auto& d : result.detections)
       dets.push_back(DetectionJson(d, T_base_lidar, T_map_base));
     nlohmann::json out{{"detections", dets}, {"stats", StatsJson(result.stats)}};
-    if (opt.explain) {
+    if (explain) {
       nlohmann::json hyps = nlohmann::json::array();
       for (const auto& h : result.hypotheses) hyps.push_back(HypothesisJson(h));
       out["hypotheses"] = hyps;
     }
-    std::cout << out.dump() << "\n";
+    return out;
   }
+};
+
+/// `--scan -`: JSON Lines from standard input, one flushed line out per line in, as soon as it
+/// is computed. A bad line gets {"error", "line"} and the stream goes on; the exit code says
+/// whether any line was bad.
+int StreamDetect(const DetectJob& job) {
+  io::ScanLineReader reader(std::cin, "(stdin)");
+  bool any_bad = false;
+  while (const std::optional<io::ScanLine> line = reader.Next()) {
+    nlohmann::json out;
+    if (line->scan) {
+      out = job.Run(*line->scan);
+    } else {
+      any_bad = true;
+      out = {{"error", line->error->what()}, {"line", line->line}};
+    }
+    std::cout << out.dump() << std::endl;  // flushed: the consumer sees it now
+  }
+  return any_bad ? kExitBadInput : kExitOk;
+}
+
+int RunDetect(const DetectOptions& opt) {
+  // Parse everything before detecting anything: bad input never yields partial output.
+  DetectJob job{perception::Detector(io::ReadShelfModels(opt.models),
+                                     opt.params.empty() ? perception::DetectorConfig{}
+                                                        : io::ReadDetectorConfig(opt.params)),
+                OptionalPose(opt.preset, "--preset"), OptionalPose(opt.extrinsic, "--extrinsic"),
+                OptionalPose(opt.robot_pose, "--robot-pose"), opt.explain};
+  if (opt.scan == "-") return StreamDetect(job);
+  // A file is checked whole first (one scan in memory at a time), then detected.
+  io::ForEachScan(opt.scan, [](const geometry::LaserScan&) {});
+  io::ForEachScan(opt.scan, [&job](const geometry::LaserScan& scan) {
+    std::cout << job.Run(scan).dump() << "\n";
+  });
   return kExitOk;
 }
 
@@ -166,7 +178,9 @@ void AddDetectCommand(CLI::App& app, int* exit_code) {
       app.add_subcommand("detect", "detect shelves in LiDAR scans (one JSON line per scan)");
   cmd->add_option("--models", opt->models, "shelf models YAML (e.g. config/models.yaml)")
       ->required();
-  cmd->add_option("--scan", opt->scan, "scans: JSON object, array or JSON Lines")->required();
+  cmd->add_option("--scan", opt->scan,
+                  "scans: JSON object, array or JSON Lines; - streams JSON Lines from stdin")
+      ->required();
   cmd->add_option("--preset", opt->preset,
                   "expected shelf pose X,Y,YAW in the lidar frame [m,m,rad]");
   cmd->add_option("--params", opt->params, "detector parameters YAML (e.g. config/detector.yaml)");

@@ -1,0 +1,24 @@
+#pragma once
+// Command-line values every subcommand parses the same way, with one error style:
+// "error: (command line): --flag: what was expected".
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "geometry/pose2.hpp"
+
+namespace shelfdock::app {
+
+/// Stands for the command line where a file name would be in an io::InputError.
+inline constexpr const char* kCommandLine = "(command line)";
+
+/// Parses "a,b,..." into exactly `n` finite numbers; io::InputError names `flag` and `form`
+/// (e.g. "X,Y,YAW (m, m, rad)") and quotes the text otherwise.
+std::vector<double> ParseNumbers(const std::string& text, std::size_t n, const std::string& flag,
+                                 const std::string& form);
+
+/// Parses a pose "X,Y,YAW" (metres, metres, radians).
+geometry::Pose2 ParsePose(const std::string& text, const std::string& flag);
+
+}  // namespace shelfdock::app
