@@ -32,6 +32,17 @@ std::vector<double> ParseNumbers(const std::string& text, std::size_t n, const s
   return values;
 }
 
+CLI::Validator NonNegativeInteger() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+          return c >= '0' && c <= '9';
+        });
+        return digits ? "" : "must be a whole number >= 0, got '" + text + "'";
+      },
+      "INT>=0");
+}
+
 geometry::Pose2 ParsePose(const std::string& text, const std::string& flag) {
   const auto v = ParseNumbers(text, 3, flag, "X,Y,YAW (m, m, rad)");
   return geometry::Pose2(v[0], v[1], v[2]);

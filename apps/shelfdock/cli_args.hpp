@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "geometry/pose2.hpp"
 
 namespace shelfdock::app {
@@ -17,6 +19,10 @@ inline constexpr const char* kCommandLine = "(command line)";
 /// (e.g. "X,Y,YAW (m, m, rad)") and quotes the text otherwise.
 std::vector<double> ParseNumbers(const std::string& text, std::size_t n, const std::string& flag,
                                  const std::string& form);
+
+/// Check for seeds and counts held in unsigned types, which would wrap "-1" around to 2^64 - 1:
+/// "--seed: must be a whole number >= 0, got '-1'".
+CLI::Validator NonNegativeInteger();
 
 /// Parses a pose "X,Y,YAW" (metres, metres, radians).
 geometry::Pose2 ParsePose(const std::string& text, const std::string& flag);

@@ -211,7 +211,7 @@ void AddDockCommands(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   dock->add_option("--seed", opt->seed, "random seed")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegativeInteger());
   dock->add_option("--record", opt->record, "write the run as JSON Lines for replay");
   dock->callback([opt, exit_code] { *exit_code = RunDock(*opt); });
 
@@ -225,7 +225,7 @@ void AddDockCommands(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   ev->add_option("--seed0", eopt->seed, "first seed")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegativeInteger());
   ev->callback([eopt, exit_code] { *exit_code = RunEvalDocking(*eopt); });
 }
 

@@ -145,7 +145,7 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   cmd->add_option("--seed0", opt->seed0, "seed of each class's first scene (then +1 per scene)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegativeInteger());
   cmd->add_option("--class", opt->classes,
                   "only these classes: open row aisle occluded_leg person_beside_leg large_close "
                   "mixed_neighbours round_noisy clutter");

@@ -95,7 +95,7 @@ void AddMarkerCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--id", opt->id, "with --render: tag36h11 id of the code")->capture_default_str();
   cmd->add_option("--seed", opt->seed, "with --render: noise seed")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegativeInteger());
   cmd->callback([opt, exit_code, image, render] {
     if (image->count() == 0 && render->count() == 0) {
       throw io::InputError(kCommandLine, "--image", "give --image FILE or --render FILE");

@@ -113,7 +113,7 @@ void AddSimulateCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--pose", opt->pose, "LiDAR pose in the map: X,Y,YAW (m, rad)")->required();
   cmd->add_option("--velocity", opt->velocity, "LiDAR motion V,W (m/s, rad/s); default 0,0");
   cmd->add_option("--seed", opt->seed, "random seed (noise, dropouts, presets)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegativeInteger());
   cmd->add_option("--count", opt->count, "number of scans (one per scan period)");
   cmd->add_option("--models", opt->models, "shelf models YAML (default config/models.yaml)");
   cmd->add_option("--lidar", opt->lidar, "LiDAR config YAML (default: VANJEE WLR-716)");

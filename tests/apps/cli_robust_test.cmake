@@ -9,13 +9,13 @@ expect_shelfdock(0 "^shelfdock [0-9]+\\.[0-9]+\\.[0-9]+" --version)
 expect_shelfdock(2 "error: \\(command line\\): a subcommand is required")
 
 # Negative seeds and counts are refused, not wrapped around.
-expect_shelfdock(2 "error: \\(command line\\): --seed" simulate --scenario ${SCENARIO}
-                 --pose 0,0,0 --seed -1 --out ${WORK_DIR}/x.jsonl)
+expect_shelfdock(2 "error: \\(command line\\): --seed: must be a whole number >= 0, got '-1'"
+                 simulate --scenario ${SCENARIO} --pose 0,0,0 --seed -1 --out ${WORK_DIR}/x.jsonl)
 expect_shelfdock(2 "error: \\(command line\\): --count: must be >= 1" simulate
                  --scenario ${SCENARIO} --pose 0,0,0 --count -3 --out ${WORK_DIR}/x.jsonl)
-expect_shelfdock(2 "error: \\(command line\\): --seed" dock --scenario ${SCENARIO}
-                 --models ${MODELS} --seed -1)
-expect_shelfdock(2 "error: \\(command line\\): --seed0" eval-docking --scenario ${SCENARIO}
+expect_shelfdock(2 "error: \\(command line\\): --seed: must be a whole number >= 0" dock
+                 --scenario ${SCENARIO} --models ${MODELS} --seed -1)
+expect_shelfdock(2 "error: \\(command line\\): --seed0: must be a whole number >= 0" eval-docking --scenario ${SCENARIO}
                  --models ${MODELS} --seed0 -5)
 expect_shelfdock(2 "error: \\(command line\\): --runs: must be >= 1" eval-docking
                  --scenario ${SCENARIO} --models ${MODELS} --runs -2)
