@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/input_error_of.hpp"
 #include "../common/paper_models.hpp"
 #include "../common/temp_dir.hpp"
 #include "io/input_error.hpp"
@@ -24,6 +25,7 @@
 namespace shelfdock::io {
 namespace {
 
+using testing::InputErrorOf;
 using testing::TempDir;
 
 const std::string kData = std::string(SHELFDOCK_SOURCE_DIR) + "/tests/data/";
@@ -77,18 +79,6 @@ std::string WriteFile(const TempDir& dir, const std::string& name, const std::st
   return path;
 }
 
-/// Runs `read` and returns the InputError's message; fails the test when nothing is thrown.
-template <typename F>
-std::string ErrorOf(F read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
-}
-
 TEST(HostileInputTest, TenMillionBeamLineStopsAtTheLineLimit) {
   // 10 M beams of "1.5," would be 40 MB: the reader gives up after one line limit.
   GeneratedStreamBuf buf(R"({"angle_min":-1,"angle_max":1,"angle_increment":2e-7,"ranges":[)",
@@ -116,7 +106,7 @@ TEST(HostileInputTest, TenMillionBeamDocumentStopsAtTheArrayLimit) {
   text.back() = ']';
   text += "}";
   const std::string path = WriteFile(dir, "ten_million.json", text);
-  const std::string error = ErrorOf([&] { ReadScans(path); });
+  const std::string error = InputErrorOf([&] { ReadScans(path); });
   EXPECT_NE(error.find("ten_million.json"), std::string::npos) << error;
   EXPECT_NE(error.find("more than " + std::to_string(kMaxJsonArrayElements)), std::string::npos)
       << error;
@@ -125,7 +115,7 @@ TEST(HostileInputTest, TenMillionBeamDocumentStopsAtTheArrayLimit) {
 TEST(HostileInputTest, BeamsOverTheLimitAreRejectedAndAtTheLimitAccepted) {
   TempDir dir;
   const std::string over = WriteFile(dir, "over.jsonl", ScanLineJson(kMaxBeamsPerScan + 1, "1"));
-  EXPECT_NE(ErrorOf([&] { ReadScans(over); }).find("more than"), std::string::npos);
+  EXPECT_NE(InputErrorOf([&] { ReadScans(over); }).find("more than"), std::string::npos);
   const std::string at = WriteFile(dir, "at.jsonl", ScanLineJson(kMaxBeamsPerScan, "1", 1e-5));
   const auto scans = ReadScans(at);
   ASSERT_EQ(scans.size(), 1u);
@@ -149,13 +139,13 @@ TEST(HostileInputTest, WrongLengthsNameTheField) {
   // 11 ranges where the angles say 21.
   std::string few = ScanLineJson(21);
   few = few.substr(0, few.find("\"ranges\"")) + R"("ranges":[1,1,1,1,1,1,1,1,1,1,1]})";
-  EXPECT_NE(ErrorOf([&] { ReadScans(WriteFile(dir, "few.jsonl", few)); })
+  EXPECT_NE(InputErrorOf([&] { ReadScans(WriteFile(dir, "few.jsonl", few)); })
                 .find("line 1.ranges: holds 11 beams but angle_min/angle_max/angle_increment "
                       "imply 21"),
             std::string::npos);
   std::string intensities = ScanLineJson(5);
   intensities.insert(intensities.size() - 1, R"(,"intensities":[1,2,3])");
-  EXPECT_NE(ErrorOf([&] {
+  EXPECT_NE(InputErrorOf([&] {
               ReadScans(WriteFile(dir, "int.jsonl", intensities));
             }).find("line 1.intensities: length differs from ranges"),
             std::string::npos);
@@ -166,7 +156,7 @@ TEST(HostileInputTest, ZeroIncrementIsAnError) {
   const std::string path = WriteFile(
       dir, "zero.jsonl",
       R"({"angle_min":0,"angle_max":0,"angle_increment":0,"range_min":0.05,"range_max":25,"ranges":[1,2,3]})");
-  EXPECT_NE(ErrorOf([&] { ReadScans(path); }).find("line 1.angle_increment: must be non-zero"),
+  EXPECT_NE(InputErrorOf([&] { ReadScans(path); }).find("line 1.angle_increment: must be non-zero"),
             std::string::npos);
 }
 
@@ -176,7 +166,7 @@ TEST(HostileInputTest, NegativeIncrementAgainstTheAnglesIsAnError) {
   const std::string path = WriteFile(
       dir, "neg.jsonl",
       R"({"angle_min":-1,"angle_max":-0.98,"angle_increment":-0.01,"range_min":0.05,"range_max":25,"ranges":[1,2,3]})");
-  EXPECT_NE(ErrorOf([&] { ReadScans(path); }).find("line 1.ranges: holds 3 beams"),
+  EXPECT_NE(InputErrorOf([&] { ReadScans(path); }).find("line 1.ranges: holds 3 beams"),
             std::string::npos);
 }
 
@@ -229,14 +219,15 @@ TEST(HostileInputTest, OneGigabyteFilesAreRejectedBeforeTheyAreRead) {
   TempDir dir;
   // Zero bytes: not JSON at all, known from the first byte.
   const std::string zeros = SparseFile(dir, "zeros.json", "", kGigabyte);
-  EXPECT_NE(ErrorOf([&] { ReadScans(zeros); }).find("line 1: expected a scan object"),
+  EXPECT_NE(InputErrorOf([&] { ReadScans(zeros); }).find("line 1: expected a scan object"),
             std::string::npos);
   // An array document: refused from its size alone.
   const std::string array = SparseFile(dir, "array.json", "[", kGigabyte);
-  EXPECT_NE(ErrorOf([&] { ReadScans(array); }).find("a JSON document over"), std::string::npos);
+  EXPECT_NE(InputErrorOf([&] { ReadScans(array); }).find("a JSON document over"),
+            std::string::npos);
   // One endless line: refused at the line limit.
   const std::string line = SparseFile(dir, "line.jsonl", R"({"angle_min":0,"ranges":[)", kGigabyte);
-  EXPECT_NE(ErrorOf([&] { ReadScans(line); }).find("line 1: longer than"), std::string::npos);
+  EXPECT_NE(InputErrorOf([&] { ReadScans(line); }).find("line 1: longer than"), std::string::npos);
 }
 
 TEST(HostileInputTest, BinaryGarbageIsAnError) {
@@ -247,7 +238,8 @@ TEST(HostileInputTest, BinaryGarbageIsAnError) {
     std::string text = head;
     for (int i = 0; i < 100000; ++i) text.push_back(static_cast<char>(byte(rng)));
     const std::string path = WriteFile(dir, "garbage.bin", text);
-    EXPECT_NE(ErrorOf([&] { ReadScans(path); }).find("garbage.bin"), std::string::npos) << head;
+    EXPECT_NE(InputErrorOf([&] { ReadScans(path); }).find("garbage.bin"), std::string::npos)
+        << head;
   }
 }
 

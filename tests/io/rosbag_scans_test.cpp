@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/input_error_of.hpp"
 #include "../common/temp_dir.hpp"
 #include "bag_writer.hpp"
 #include "io/input_error.hpp"
@@ -19,6 +20,7 @@ namespace shelfdock::io {
 namespace {
 
 using testing::BagLaserScan;
+using testing::InputErrorOf;
 using testing::TempDir;
 using testing::WriteTestBag;
 
@@ -28,17 +30,6 @@ BagLaserScan Scan(double stamp_s, std::vector<float> ranges, const std::string& 
   s.stamp_s = stamp_s;
   s.ranges = std::move(ranges);
   return s;
-}
-
-template <typename F>
-std::string ErrorOf(F read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
 }
 
 TEST(RosbagScansTest, ReadsEveryScanInTimeOrderWithNoReturnsAsNaN) {
@@ -79,11 +70,11 @@ TEST(RosbagScansTest, BagWithoutLaserScanTopicsIsAClearError) {
   const std::string path = dir.File("no_scans.bag");
   WriteTestBag(path, {}, "/chatter");
   EXPECT_TRUE(ListBagScanTopics(path).empty());
-  const std::string error = ErrorOf([&] { ReadBagScans(path, ""); });
+  const std::string error = InputErrorOf([&] { ReadBagScans(path, ""); });
   EXPECT_NE(error.find("no_scans.bag: topics: no sensor_msgs/LaserScan messages"),
             std::string::npos)
       << error;
-  EXPECT_NE(ErrorOf([&] { ReadBagScans(dir.File("good.bag"), "/none"); }).find("good.bag"),
+  EXPECT_NE(InputErrorOf([&] { ReadBagScans(dir.File("good.bag"), "/none"); }).find("good.bag"),
             std::string::npos);
 }
 
@@ -100,7 +91,7 @@ TEST(RosbagScansTest, TruncatedBagIsAClearError) {
     std::filesystem::copy_file(path, dir.File("part.bag"),
                                std::filesystem::copy_options::overwrite_existing);
     std::filesystem::resize_file(dir.File("part.bag"), size);
-    const std::string error = ErrorOf([&] {
+    const std::string error = InputErrorOf([&] {
       ListBagScanTopics(dir.File("part.bag"));
       ReadBagScans(dir.File("part.bag"), "");
     });
@@ -117,7 +108,7 @@ TEST(RosbagScansTest, GarbageIsAClearError) {
   std::ofstream(dir.File("garbage.bag"), std::ios::binary) << text;
   std::ofstream(dir.File("empty.bag"), std::ios::binary) << "";
   for (const char* name : {"garbage.bag", "empty.bag", "missing.bag"}) {
-    EXPECT_NE(ErrorOf([&] { ReadBagScans(dir.File(name), ""); }).find(name), std::string::npos)
+    EXPECT_NE(InputErrorOf([&] { ReadBagScans(dir.File(name), ""); }).find(name), std::string::npos)
         << name;
   }
 }
@@ -127,7 +118,7 @@ TEST(RosbagScansTest, ScansTheChecksRefuseNameTheTopic) {
   BagLaserScan zero = Scan(1.0, {1.0F, 1.0F, 1.0F}, "/zero");
   zero.angle_increment = 0.0F;
   WriteTestBag(dir.File("zero.bag"), {zero});
-  EXPECT_NE(ErrorOf([&] {
+  EXPECT_NE(InputErrorOf([&] {
               ReadBagScans(dir.File("zero.bag"), "");
             }).find("/zero[0].angle_increment: must be non-zero"),
             std::string::npos);
@@ -135,14 +126,15 @@ TEST(RosbagScansTest, ScansTheChecksRefuseNameTheTopic) {
   BagLaserScan many = Scan(1.0, std::vector<float>(kMaxBeamsPerScan + 1, 1.0F), "/many");
   many.angle_increment = 1e-5F;
   WriteTestBag(dir.File("many.bag"), {many});
-  EXPECT_NE(ErrorOf([&] { ReadBagScans(dir.File("many.bag"), ""); }).find("beams exceed the limit"),
-            std::string::npos);
+  EXPECT_NE(
+      InputErrorOf([&] { ReadBagScans(dir.File("many.bag"), ""); }).find("beams exceed the limit"),
+      std::string::npos);
 
   // Over the message size limit: refused before the message is read.
   BagLaserScan huge = Scan(1.0, std::vector<float>(kMaxBagMessageBytes / 4 + 10, 1.0F), "/huge");
   huge.angle_increment = 1e-6F;
   WriteTestBag(dir.File("huge.bag"), {huge});
-  EXPECT_NE(ErrorOf([&] { ReadBagScans(dir.File("huge.bag"), ""); }).find("exceeds the limit"),
+  EXPECT_NE(InputErrorOf([&] { ReadBagScans(dir.File("huge.bag"), ""); }).find("exceeds the limit"),
             std::string::npos);
 }
 
