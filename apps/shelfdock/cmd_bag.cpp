@@ -30,20 +30,22 @@ int RunBag(const BagOptions& opt) {
     std::cout << nlohmann::json{{"bag", opt.bag}, {"laser_scan_topics", topics}}.dump() << "\n";
     return kExitOk;
   }
-  Progress reading("bag " + opt.bag, 0);
-  reading.Update(0, "reading");
-  const auto scans = io::ReadBagScans(opt.bag, opt.topic);
   std::ofstream out(opt.out);
   if (!out) throw io::InputError(opt.out, "", "cannot write file");
-  Progress writing("bag -> " + opt.out, static_cast<long>(scans.size()));
+  Progress writing("bag -> " + opt.out, 0);
   long written = 0;
-  for (const auto& scan : scans) {
+  // One scan in memory at a time, whatever the bag's length.
+  const std::size_t scans = io::ForEachBagScan(opt.bag, opt.topic, [&](const auto& scan) {
     out << io::ScanToJson(scan).dump() << "\n";
     writing.Update(++written);
+  });
+  if (scans == 0) {
+    throw io::InputError(opt.bag, opt.topic.empty() ? "topics" : opt.topic,
+                         "no sensor_msgs/LaserScan messages");
   }
   std::cout << nlohmann::json{{"bag", opt.bag},
                               {"topic", opt.topic},
-                              {"scans", scans.size()},
+                              {"scans", scans},
                               {"out", opt.out}}
                    .dump()
             << "\n";

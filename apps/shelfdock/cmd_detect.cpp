@@ -1,17 +1,17 @@
-// `shelfdock detect`: runs the shelf detector on every scan of a file and prints one JSON line
-// per scan: {"detections": [...], "stats": {...}}, detections best first, in the scan's frame,
-// plus "base"/"map" poses when --extrinsic / --robot-pose are given.
+// `shelfdock detect`: runs the shelf detector on every scan of a file (or of standard input,
+// `--scan -`, streamed) and prints one JSON line per scan: {"detections": [...], "stats": {...}},
+// detections best first, in the scan's frame, plus "base"/"map" poses when --extrinsic /
+// --robot-pose are given.
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "config_paths.hpp"
 #include "io/detection_json.hpp"
@@ -21,6 +21,7 @@
 #include "io/input_error.hpp"
 #include "io/models_yaml.hpp"
 #include "io/scan_json.hpp"
+#include "io/scan_line_reader.hpp"
 #include "perception/detector.hpp"
 #include "perception/frames.hpp"
 #include "web_pages.hpp"
@@ -43,71 +44,91 @@ struct DetectOptions {
 // browser to open comfortably; cut the file first (one scan per line in JSON Lines).
 constexpr std::size_t kMaxHtmlScans = 200;
 
-// Parses "X,Y,YAW" (metres, metres, radians); `flag` names the option in errors.
-std::optional<geometry::Pose2> ParsePose(const std::string& text, const std::string& flag) {
+std::optional<geometry::Pose2> OptionalPose(const std::string& text, const std::string& flag) {
   if (text.empty()) return std::nullopt;
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    std::size_t used = 0;
-    double d = 0.0;
-    try {
-      d = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
+  return ParsePose(text, flag);
+}
+
+/// The detector and frames of one `detect` run, and the JSON line it prints per scan.
+struct DetectJob {
+  perception::Detector detector;
+  std::optional<geometry::Pose2> preset;
+  std::optional<geometry::Pose2> T_base_lidar;
+  std::optional<geometry::Pose2> T_map_base;
+  bool explain = false;
+
+  /// The line for `scan`; when `page_scan` is given it also gets the explain page's entry.
+  nlohmann::json Run(const geometry::LaserScan& scan, nlohmann::json* page_scan = nullptr) const {
+    const perception::DetectionResult result =
+        detector.Detect(scan, preset, explain || page_scan != nullptr);
+    nlohmann::json out = io::DetectionResultToJson(result, true, T_base_lidar, T_map_base);
+    if (page_scan != nullptr) {
+      *page_scan = io::ExplainGeometryJson(scan, detector, preset);
+      (*page_scan)["detections"] = out["detections"];
+      (*page_scan)["stats"] = out["stats"];
+      (*page_scan)["hypotheses"] = out["hypotheses"];
+      (*page_scan)["stamp"] = scan.stamp;
     }
-    if (used == 0 || used != item.size() || !std::isfinite(d)) {
-      throw io::InputError("(command line)", flag, "expected X,Y,YAW as three finite numbers");
+    if (!explain) out.erase("hypotheses");
+    return out;
+  }
+};
+
+/// `--scan -`: JSON Lines from standard input, one flushed line out per line in, as soon as it
+/// is computed. A bad line gets {"error", "line"} and the stream goes on; the exit code says
+/// whether any line was bad.
+int StreamDetect(const DetectJob& job) {
+  io::ScanLineReader reader(std::cin, "(stdin)");
+  bool any_bad = false;
+  while (const std::optional<io::ScanLine> line = reader.Next()) {
+    nlohmann::json out;
+    if (line->scan) {
+      out = job.Run(*line->scan);
+    } else {
+      any_bad = true;
+      out = {{"error", line->error->what()}, {"line", line->line}};
     }
-    v.push_back(d);
+    std::cout << out.dump() << std::endl;  // flushed: the consumer sees it now
   }
-  if (v.size() != 3) {
-    throw io::InputError("(command line)", flag, "expected X,Y,YAW as three finite numbers");
-  }
-  return geometry::Pose2(v[0], v[1], v[2]);
+  return any_bad ? kExitBadInput : kExitOk;
 }
 
 int RunDetect(const DetectOptions& opt) {
   // Parse everything before detecting anything: bad input never yields partial output.
-  const auto preset = ParsePose(opt.preset, "--preset");
-  const auto T_base_lidar = ParsePose(opt.extrinsic, "--extrinsic");
-  const auto T_map_base = ParsePose(opt.robot_pose, "--robot-pose");
-  auto models = io::ReadShelfModels(opt.models);
-  const perception::DetectorConfig config =
-      opt.params.empty() ? perception::DetectorConfig{} : io::ReadDetectorConfig(opt.params);
-  const auto scans = io::ReadScans(opt.scan);
-  if (!opt.html.empty() && scans.size() > kMaxHtmlScans) {
+  DetectJob job{perception::Detector(io::ReadShelfModels(opt.models),
+                                     opt.params.empty() ? perception::DetectorConfig{}
+                                                        : io::ReadDetectorConfig(opt.params)),
+                OptionalPose(opt.preset, "--preset"), OptionalPose(opt.extrinsic, "--extrinsic"),
+                OptionalPose(opt.robot_pose, "--robot-pose"), opt.explain};
+  if (opt.scan == "-") {
+    if (!opt.html.empty()) {
+      throw io::InputError(std::string(kCommandLine), "--html",
+                           "the explain page is written from a file, not from --scan -");
+    }
+    return StreamDetect(job);
+  }
+  // A file is checked whole first (one scan in memory at a time), then detected.
+  std::size_t count = 0;
+  io::ForEachScan(opt.scan, [&count](const geometry::LaserScan&) { ++count; });
+  if (!opt.html.empty() && count > kMaxHtmlScans) {
     throw io::InputError(opt.scan, "--html",
-                         std::to_string(scans.size()) + " scans; the explain page holds at most " +
+                         std::to_string(count) + " scans; the explain page holds at most " +
                              std::to_string(kMaxHtmlScans) + " (cut the file first)");
   }
-  const perception::Detector detector(std::move(models), config);
   nlohmann::json page_scans = nlohmann::json::array();
-
-  for (const auto& scan : scans) {
-    const perception::DetectionResult result =
-        detector.Detect(scan, preset, opt.explain || !opt.html.empty());
-    nlohmann::json out = io::DetectionResultToJson(result, true, T_base_lidar, T_map_base);
-    const nlohmann::json hyps = out["hypotheses"];
-    if (!opt.explain) out.erase("hypotheses");
-    std::cout << out.dump() << "\n";
-    if (!opt.html.empty()) {
-      nlohmann::json page_scan = io::ExplainGeometryJson(scan, detector, preset);
-      page_scan["detections"] = out["detections"];
-      page_scan["stats"] = out["stats"];
-      page_scan["hypotheses"] = hyps;
-      page_scan["stamp"] = scan.stamp;
-      page_scans.push_back(std::move(page_scan));
-    }
-  }
+  io::ForEachScan(opt.scan, [&](const geometry::LaserScan& scan) {
+    nlohmann::json page_scan;
+    std::cout << job.Run(scan, opt.html.empty() ? nullptr : &page_scan).dump() << "\n";
+    if (!opt.html.empty()) page_scans.push_back(std::move(page_scan));
+  });
   if (!opt.html.empty()) {
+    const auto& preset = job.preset;
     const nlohmann::json page{
         {"source", opt.scan},
         {"preset", preset ? nlohmann::json{{"x", preset->x}, {"y", preset->y}, {"yaw", preset->yaw}}
                           : nlohmann::json(nullptr)},
-        {"models", io::ModelsJson(detector.models())},
-        {"min_confidence", detector.config().evidence.min_confidence},
+        {"models", io::ModelsJson(job.detector.models())},
+        {"min_confidence", job.detector.config().evidence.min_confidence},
         {"scans", page_scans}};
     io::WritePage(opt.html, kExplainPage, page);
   }
@@ -121,7 +142,9 @@ void AddDetectCommand(CLI::App& app, int* exit_code) {
   CLI::App* cmd =
       app.add_subcommand("detect", "detect shelves in LiDAR scans (one JSON line per scan)");
   cmd->add_option("--models", opt->models, "shelf models YAML")->capture_default_str();
-  cmd->add_option("--scan", opt->scan, "scans: JSON object, array or JSON Lines")->required();
+  cmd->add_option("--scan", opt->scan,
+                  "scans: JSON object, array or JSON Lines; - streams JSON Lines from stdin")
+      ->required();
   cmd->add_option("--preset", opt->preset,
                   "expected shelf pose X,Y,YAW in the lidar frame [m,m,rad]");
   cmd->add_option("--params", opt->params, "detector parameters YAML (e.g. config/detector.yaml)");

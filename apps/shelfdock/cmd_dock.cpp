@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "config_paths.hpp"
 #include "eval/docking_runner.hpp"
@@ -46,7 +47,7 @@ struct DockOptions {
 docking::Method ParseMethod(const std::string& text) {
   if (text == "continuous") return docking::Method::kContinuous;
   if (text == "stop-and-recognise") return docking::Method::kStopAndRecognise;
-  throw io::InputError("(command line)", "--method", "expected continuous or stop-and-recognise");
+  throw io::InputError(kCommandLine, "--method", "expected continuous or stop-and-recognise");
 }
 
 eval::RunConfig MakeRunConfig(const DockOptions& opt) {
@@ -92,7 +93,7 @@ sim::Scenario LoadScenario(const DockOptions& opt,
   sim::Scenario scenario = io::ReadScenario(opt.scenario, models);
   if (opt.target >= 0) {
     if (scenario.FindShelf(opt.target) == nullptr) {
-      throw io::InputError("(command line)", "--target",
+      throw io::InputError(kCommandLine, "--target",
                            "no shelf " + std::to_string(opt.target) + " in " + opt.scenario);
     }
     scenario.target_shelf_id = opt.target;
@@ -143,7 +144,7 @@ int RunDock(const DockOptions& opt) {
 int RunEvalDocking(const DockOptions& opt) {
   const auto models = io::ReadShelfModels(opt.models);
   const sim::Scenario scenario = LoadScenario(opt, models);
-  if (opt.runs < 1) throw io::InputError("(command line)", "--runs", "must be >= 1");
+  if (opt.runs < 1) throw io::InputError(kCommandLine, "--runs", "must be >= 1");
   std::vector<docking::Method> methods{docking::Method::kContinuous,
                                        docking::Method::kStopAndRecognise};
   if (opt.method != "both") methods = {ParseMethod(opt.method)};
@@ -226,7 +227,9 @@ void AddDockCommands(CLI::App& app, int* exit_code) {
   AddCommonOptions(dock, opt.get());
   dock->add_option("--method", opt->method, "continuous | stop-and-recognise")
       ->capture_default_str();
-  dock->add_option("--seed", opt->seed, "random seed")->capture_default_str();
+  dock->add_option("--seed", opt->seed, "random seed")
+      ->capture_default_str()
+      ->check(NonNegativeInteger());
   dock->add_option("--record", opt->record, "write the run as JSON Lines for replay");
   dock->add_option("--html", opt->html,
                    "write the replay page of the run here (one self-contained HTML file)");
@@ -240,7 +243,9 @@ void AddDockCommands(CLI::App& app, int* exit_code) {
   eopt->method = "both";
   ev->add_option("--method", eopt->method, "both | continuous | stop-and-recognise")
       ->capture_default_str();
-  ev->add_option("--seed0", eopt->seed, "first seed")->capture_default_str();
+  ev->add_option("--seed0", eopt->seed, "first seed")
+      ->capture_default_str()
+      ->check(NonNegativeInteger());
   ev->callback([eopt, exit_code] { *exit_code = RunEvalDocking(*eopt); });
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "config_paths.hpp"
 #include "eval/layout_summary.hpp"
@@ -59,7 +60,7 @@ std::vector<sim::NamedLidar> ReadLidars(const std::vector<std::string>& files) {
 
 eval::LayoutSweepConfig SweepConfig(const EvalLayoutsOptions& opt) {
   if (opt.scenes_per_class < 1) {
-    throw io::InputError("(command line)", "--scenes-per-class", "must be >= 1");
+    throw io::InputError(kCommandLine, "--scenes-per-class", "must be >= 1");
   }
   eval::LayoutSweepConfig config;
   config.scenes_per_class = opt.scenes_per_class;
@@ -73,7 +74,7 @@ eval::LayoutSweepConfig SweepConfig(const EvalLayoutsOptions& opt) {
       std::string message = "unknown class '";
       message.append(name).append("'; one of");
       for (auto k : sim::kAllLayoutClasses) message.append(" ").append(sim::LayoutClassName(k));
-      throw io::InputError("(command line)", "--class", message);
+      throw io::InputError(kCommandLine, "--class", message);
     }
     config.classes.push_back(*c);
   }
@@ -144,7 +145,8 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--scenes-per-class", opt->scenes_per_class, "scenes of each class")
       ->capture_default_str();
   cmd->add_option("--seed0", opt->seed0, "seed of each class's first scene (then +1 per scene)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(NonNegativeInteger());
   cmd->add_option("--class", opt->classes,
                   "only these classes: open row aisle occluded_leg person_beside_leg large_close "
                   "mixed_neighbours round_noisy clutter");

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "config_paths.hpp"
 #include "io/camera_yaml.hpp"
@@ -38,27 +39,6 @@ struct MarkerOptions {
   std::uint64_t seed = 1;
 };
 
-geometry::Pose2 ParseOffset(const std::string& text) {
-  std::vector<double> values;
-  std::stringstream ss(text);
-  std::string item;
-  const io::InputError error("command line", "--offset",
-                             "expected X,Y,YAW (metres, radians), got '" + text + "'");
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      values.push_back(std::stod(item, &used));
-      if (used != item.size() || !std::isfinite(values.back())) throw error;
-    } catch (const std::invalid_argument&) {
-      throw error;
-    } catch (const std::out_of_range&) {
-      throw error;
-    }
-  }
-  if (values.size() != 3) throw error;
-  return {values[0], values[1], values[2]};
-}
-
 int RunMarker(const MarkerOptions& opt) {
   const io::CameraSetup setup = io::ReadCameraSetup(opt.camera);
   const geometry::UpwardCamera& camera = setup.camera.camera;
@@ -66,11 +46,11 @@ int RunMarker(const MarkerOptions& opt) {
   if (!opt.render.empty()) {
     if (opt.id < 0 || opt.id >= sim::MarkerFamilySize()) {
       throw io::InputError(
-          "command line", "--id",
+          kCommandLine, "--id",
           "must be a tag36h11 id, 0.." + std::to_string(sim::MarkerFamilySize() - 1));
     }
     const geometry::GrayImage image =
-        sim::RenderMarker(setup.camera, opt.id, ParseOffset(opt.offset), opt.seed);
+        sim::RenderMarker(setup.camera, opt.id, ParsePose(opt.offset, "--offset"), opt.seed);
     io::WritePgm(opt.render, image);
     return kExitOk;
   }
@@ -114,10 +94,12 @@ void AddMarkerCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--offset", opt->offset, "with --render: code pose X,Y,YAW from the camera")
       ->capture_default_str();
   cmd->add_option("--id", opt->id, "with --render: tag36h11 id of the code")->capture_default_str();
-  cmd->add_option("--seed", opt->seed, "with --render: noise seed")->capture_default_str();
+  cmd->add_option("--seed", opt->seed, "with --render: noise seed")
+      ->capture_default_str()
+      ->check(NonNegativeInteger());
   cmd->callback([opt, exit_code, image, render] {
     if (image->count() == 0 && render->count() == 0) {
-      throw io::InputError("command line", "--image", "give --image FILE or --render FILE");
+      throw io::InputError(kCommandLine, "--image", "give --image FILE or --render FILE");
     }
     *exit_code = RunMarker(*opt);
   });

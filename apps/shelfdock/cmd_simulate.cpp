@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "config_paths.hpp"
 #include "geometry/angle.hpp"
@@ -36,35 +37,14 @@ struct SimulateOptions {
   std::string truth;
 };
 
-/// Parses "a,b[,c]" into exactly `n` finite numbers; InputError names the option otherwise.
-std::vector<double> ParseNumbers(const std::string& text, std::size_t n, const std::string& opt,
-                                 const std::string& form) {
-  std::vector<double> values;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      values.push_back(std::stod(item, &used));
-      if (used != item.size() || !std::isfinite(values.back())) throw std::invalid_argument("");
-    } catch (const std::exception&) {
-      throw io::InputError("command line", opt, "expected " + form + ", got '" + text + "'");
-    }
-  }
-  if (values.size() != n) {
-    throw io::InputError("command line", opt, "expected " + form + ", got '" + text + "'");
-  }
-  return values;
-}
-
 nlohmann::json PoseJson(const geometry::Pose2& T) {
   return {{"x", T.x}, {"y", T.y}, {"yaw", T.yaw}};
 }
 
 int RunSimulate(const SimulateOptions& opt) {
-  const auto p = ParseNumbers(opt.pose, 3, "--pose", "X,Y,YAW (metres, radians)");
+  const auto p = ParseNumbers(opt.pose, 3, "--pose", "X,Y,YAW (m, m, rad)");
   const auto v = ParseNumbers(opt.velocity, 2, "--velocity", "V,W (m/s, rad/s)");
-  if (opt.count < 1) throw io::InputError("command line", "--count", "must be >= 1");
+  if (opt.count < 1) throw io::InputError(kCommandLine, "--count", "must be >= 1");
   const auto models = io::ReadShelfModels(opt.models);
   const sim::Scenario scenario = io::ReadScenario(opt.scenario, models);
   const sim::LidarConfig config =
@@ -133,7 +113,8 @@ void AddSimulateCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--scenario", opt->scenario, "scenario YAML (config/scenarios/)")->required();
   cmd->add_option("--pose", opt->pose, "LiDAR pose in the map: X,Y,YAW (m, rad)")->required();
   cmd->add_option("--velocity", opt->velocity, "LiDAR motion V,W (m/s, rad/s); default 0,0");
-  cmd->add_option("--seed", opt->seed, "random seed (noise, dropouts, presets)");
+  cmd->add_option("--seed", opt->seed, "random seed (noise, dropouts, presets)")
+      ->check(NonNegativeInteger());
   cmd->add_option("--count", opt->count, "number of scans (one per scan period)");
   cmd->add_option("--models", opt->models, "shelf models YAML (default config/models.yaml)");
   cmd->add_option("--lidar", opt->lidar, "LiDAR config YAML (default: VANJEE WLR-716)");

@@ -2,16 +2,20 @@
 // errors to exit codes; each subcommand lives in its own cmd_*.cpp.
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "config_paths.hpp"
 #include "io/input_error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"shelfdock: find a shelf with a 2D LiDAR and dock under it"};
-  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("shelfdock ") + SHELFDOCK_VERSION);
+  // `--version` alone is a complete command line; everything else names one subcommand.
+  app.require_subcommand(0, 1);
   app.footer(shelfdock::app::ConfigSearchHelp());  // subcommands added below inherit it
   int exit_code = shelfdock::app::kExitOk;
   shelfdock::app::AddDetectCommand(app, &exit_code);
@@ -27,14 +31,21 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : shelfdock::app::kExitBadInput;
+    // --help and --version end here with exit 0; a bad argument gets the one error style.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "error: " << shelfdock::app::kCommandLine << ": " << e.what() << "\n";
+    return shelfdock::app::kExitBadInput;
   } catch (const shelfdock::io::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return shelfdock::app::kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return shelfdock::app::kExitFailure;
+  }
+  if (app.get_subcommands().empty()) {
+    std::cerr << "error: " << shelfdock::app::kCommandLine
+              << ": a subcommand is required (shelfdock --help lists them)\n";
+    return shelfdock::app::kExitBadInput;
   }
   return exit_code;
 }

@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "io/input_limits.hpp"
 #include "io/yaml_fields.hpp"
 
 namespace shelfdock::io {
@@ -13,6 +14,11 @@ std::vector<geometry::ShelfModel> ReadShelfModels(const std::string& path) {
   top.RejectUnknown();
   if (!list.IsDefined() || !list.IsSequence() || list.size() == 0) {
     throw InputError(path, "models", "expected a non-empty list of shelf models");
+  }
+  if (list.size() > kMaxShelfModels) {
+    throw InputError(path, "models",
+                     std::to_string(list.size()) + " models exceed the limit of " +
+                         std::to_string(kMaxShelfModels));
   }
 
   std::vector<geometry::ShelfModel> models;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,5 +21,11 @@ std::vector<BagScanTopic> ListBagScanTopics(const std::string& path);
 /// Ranges that the message marks as no return (0, below range_min, at or above range_max, not
 /// finite) become NaN, as in the JSON scan format. Throws InputError naming the file and topic.
 std::vector<geometry::LaserScan> ReadBagScans(const std::string& path, const std::string& topic);
+
+/// Calls `on_scan` with each LaserScan on `topic` (all when empty) in time order, one scan in
+/// memory at a time whatever the bag's length; returns how many there were (0 is not an error
+/// here). A message over kMaxBagMessageBytes (input_limits.hpp) is rejected before it is read.
+std::size_t ForEachBagScan(const std::string& path, const std::string& topic,
+                           const std::function<void(const geometry::LaserScan&)>& on_scan);
 
 }  // namespace shelfdock::io

@@ -4,6 +4,7 @@
 #include <limits>
 #include <set>
 
+#include "io/input_limits.hpp"
 #include "io/yaml_fields.hpp"
 
 namespace shelfdock::io {
@@ -37,6 +38,11 @@ std::vector<Eigen::Vector2d> ReadPoints(YamlFields& parent, const std::string& k
     throw InputError(
         parent.file(), where,
         "required: a list of at least " + std::to_string(min_points) + " points [x, y] (metres)");
+  }
+  if (node.size() > kMaxSceneObjects) {
+    throw InputError(parent.file(), where,
+                     std::to_string(node.size()) + " points exceed the limit of " +
+                         std::to_string(kMaxSceneObjects));
   }
   std::vector<Eigen::Vector2d> points;
   for (std::size_t i = 0; i < node.size(); ++i) {
@@ -83,6 +89,11 @@ void ForEach(YamlFields& top, const std::string& key, Fn read) {
   const YAML::Node list = top.Child(key);
   if (!list.IsDefined() || list.IsNull()) return;
   if (!list.IsSequence()) throw InputError(top.file(), key, "expected a list");
+  if (list.size() > kMaxSceneObjects) {
+    throw InputError(top.file(), key,
+                     std::to_string(list.size()) + " entries exceed the limit of " +
+                         std::to_string(kMaxSceneObjects));
+  }
   for (std::size_t i = 0; i < list.size(); ++i) {
     YamlFields f(list[i], top.file(), key + "[" + std::to_string(i) + "]");
     read(f);

@@ -1,13 +1,22 @@
 #include "io/yaml_fields.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+
+#include "io/input_limits.hpp"
 
 namespace shelfdock::io {
 
 YAML::Node LoadYamlFile(const std::string& path) {
   std::ifstream probe(path);
   if (!probe) throw InputError(path, "", "cannot open file");
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec) &&
+      std::filesystem::file_size(path, ec) > kMaxYamlFileBytes) {
+    throw InputError(path, "",
+                     "larger than " + std::to_string(kMaxYamlFileBytes) + " bytes, the limit");
+  }
   try {
     return YAML::LoadFile(path);
   } catch (const YAML::Exception& e) {
@@ -79,6 +88,9 @@ void YamlFields::Require(bool ok, const std::string& key, const std::string& req
 void YamlFields::RejectUnknown() const {
   if (!node_.IsDefined() || node_.IsNull()) return;
   for (const auto& kv : node_) {
+    if (!kv.first.IsScalar()) {
+      throw InputError(file_, path_.empty() ? "(document)" : path_, "expected text keys");
+    }
     const std::string key = kv.first.as<std::string>();
     if (!known_.contains(key)) throw InputError(file_, KeyPath(key), "unknown key");
   }

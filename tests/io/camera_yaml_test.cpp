@@ -5,13 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/temp_dir.hpp"
 #include "io/input_error.hpp"
 
 namespace shelfdock::io {
 namespace {
 
 std::string WriteYaml(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("shelfdock_camera_" + name);
+  const auto path = shelfdock::testing::ProcessTempDir().path() / ("shelfdock_camera_" + name);
   std::ofstream(path) << text;
   return path.string();
 }

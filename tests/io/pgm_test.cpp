@@ -5,13 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/temp_dir.hpp"
 #include "io/input_error.hpp"
 
 namespace shelfdock::io {
 namespace {
 
 std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("shelfdock_pgm_" + name)).string();
+  return (shelfdock::testing::ProcessTempDir().path() / ("shelfdock_pgm_" + name)).string();
 }
 
 void WriteBytes(const std::string& path, const std::string& bytes) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/temp_dir.hpp"
 #include "io/input_error.hpp"
 #include "io/models_yaml.hpp"
 
@@ -22,7 +23,7 @@ TEST(ScanJsonTest, RoundTripKeepsNullsAsNaN) {
   s.range_min = 0.05;
   s.range_max = 25.0;
   s.ranges = {1.5, std::nan(""), 2.25};
-  const auto path = std::filesystem::temp_directory_path() / "shelfdock_io_scans.jsonl";
+  const auto path = shelfdock::testing::ProcessTempDir().path() / "shelfdock_io_scans.jsonl";
   {
     std::ofstream out(path);
     out << ScanToJson(s).dump() << "\n" << ScanToJson(s).dump() << "\n";  // JSON Lines

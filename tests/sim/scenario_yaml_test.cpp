@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/temp_dir.hpp"
 #include "geometry/angle.hpp"
 #include "io/input_error.hpp"
 #include "io/lidar_config_yaml.hpp"
@@ -23,7 +24,8 @@ std::vector<geometry::ShelfModel> Models() {
 
 /// Writes `text` to a fresh temporary YAML file and returns its path.
 std::string WriteTemp(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("shelfdock_sim_" + name + ".yaml");
+  const auto path =
+      shelfdock::testing::ProcessTempDir().path() / ("shelfdock_sim_" + name + ".yaml");
   std::ofstream(path) << text;
   return path.string();
 }
