@@ -17,6 +17,7 @@ void AddEvalRealCommand(CLI::App& app, int* exit_code);
 void AddEvalLayoutsCommand(CLI::App& app, int* exit_code);
 void AddSimulateCommand(CLI::App& app, int* exit_code);
 void AddMarkerCommand(CLI::App& app, int* exit_code);
-void AddDockCommands(CLI::App& app, int* exit_code);  ///< dock and eval-docking
+void AddDockCommands(CLI::App& app, int* exit_code);       ///< dock and eval-docking
+void AddEvalFaultsCommand(CLI::App& app, int* exit_code);  ///< eval faults
 
 }  // namespace shelfdock::app

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   shelfdock::app::AddSimulateCommand(app, &exit_code);
   shelfdock::app::AddMarkerCommand(app, &exit_code);
   shelfdock::app::AddDockCommands(app, &exit_code);
+  shelfdock::app::AddEvalFaultsCommand(app, &exit_code);
 
   try {
     app.parse(argc, argv);
