@@ -146,7 +146,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DockingConfig& c) {
   k.Check(NonNegative(c.must_detect_by_m) && c.must_detect_by_m < c.min_entry_distance_m,
           "must_detect_by_m", "in [0, min_entry_distance_m)");
   k.Check(Positive(c.detection_lost_s), "detection_lost_s", "> 0");
-  // A LiDAR that is silent is dead before the shelf counts as lost for want of scans.
+  // A silent LiDAR stops the robot before it counts as dead (detection_lost_s).
   k.Check(Positive(c.scan_timeout_s) && c.scan_timeout_s <= c.detection_lost_s, "scan_timeout_s",
           "in (0, detection_lost_s]");
   k.Check(Positive(c.lift_timeout_s), "lift_timeout_s", "> 0");

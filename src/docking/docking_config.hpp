@@ -140,7 +140,7 @@ struct DockingConfig {
   double leg_max_bearing_rad = 2.2;  ///< [rad] legs beyond this bearing are not trusted
   double must_detect_by_m = 1.2;     ///< [m] remaining path by which the shelf must be found
   double detection_lost_s = 4.0;     ///< [s] no detection (or no scan) for this long -> lost
-  double scan_timeout_s = 0.5;       ///< [s] no scan at all for this long -> LiDAR dead
+  double scan_timeout_s = 0.5;       ///< [s] no scan for this long: stop until scans return
   double lift_timeout_s = 10.0;      ///< [s]
   double timeout_s = 90.0;           ///< [s] whole attempt
   double control_period_s = 0.02;    ///< [s] expected Step period (used for stopping)

@@ -4,8 +4,10 @@
 #include "docking/docker.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -229,6 +231,33 @@ TEST(Docker, NoScansIsDetectionLost) {
   ScriptedRun run;
   run.scans_on = false;
   EXPECT_EQ(run.Run().code, OutcomeCode::kDetectionLost) << run.docker->outcome().reason;
+}
+
+// Issue 10 (eval faults): a LiDAR silent for 1.5 s used to abort at once (detection_lost after
+// scan_timeout_s = 0.5 s); now the robot stops until the scans return, then docks.
+TEST(Docker, ALidarSilentForAWhileStopsTheRobotAndDocksWhenScansReturn) {
+  ScriptedRun run;
+  double entered = -1.0;
+  std::optional<Pose2> stopped_at;
+  double moved_while_stopped_m = 0.0;
+  run.each_step = [&](ScriptedRun* r) {
+    if (entered < 0.0 && r->docker->phase() == Phase::kDock) entered = r->t_s;
+    const double since = entered < 0.0 ? -1.0 : r->t_s - entered;
+    r->scans_on = !(since >= 1.0 && since < 2.5);
+    // Braking from 0.4 m/s at 1.5 x 0.4 m/s^2 takes 0.67 s after the 0.5 s timeout: standing by
+    // 2.3 s, still before the scans return.
+    if (since >= 2.3 && since < 2.45) {
+      if (!stopped_at) stopped_at = r->T_world_base;
+      moved_while_stopped_m =
+          std::max(moved_while_stopped_m, geometry::Distance(*stopped_at, r->T_world_base));
+    }
+  };
+  const Outcome outcome = run.Run();
+  EXPECT_TRUE(outcome.ok()) << outcome.reason;
+  EXPECT_TRUE(run.Event("lidar_silent"));
+  EXPECT_TRUE(run.Event("lidar_back"));
+  ASSERT_TRUE(stopped_at.has_value());
+  EXPECT_LT(moved_while_stopped_m, 1e-6);
 }
 
 TEST(Docker, AnotherCodeIsWrongShelf) {
