@@ -3,8 +3,8 @@
 // Every phase transition and every failure, asserted against the scripted ground truth.
 #include "docking/docker.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <numbers>
 #include <optional>
