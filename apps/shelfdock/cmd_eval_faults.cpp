@@ -4,13 +4,16 @@
 // faults leave docking possible. Exit 0 when every count is zero, 1 otherwise, 2 on bad input.
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -36,6 +39,7 @@ struct EvalFaultsOptions {
   std::string lidar;
   std::string robot;
   bool json = false;
+  int jobs = 1;
 };
 
 std::string Percent(int n, int of) {
@@ -120,6 +124,9 @@ void PrintTable(const eval::FaultSweepSummary& s, const std::vector<eval::FaultR
 
 int RunEvalFaults(const EvalFaultsOptions& opt) {
   if (opt.runs < 1) throw io::InputError("(command line)", "--runs", "must be >= 1");
+  if (opt.jobs < 1 || opt.jobs > 64) {
+    throw io::InputError("(command line)", "--jobs", "must be in 1..64");
+  }
   const auto models = io::ReadShelfModels(opt.models);
   const sim::Scenario scenario = io::ReadScenario(opt.scenario, models);
   eval::RunConfig config;
@@ -131,18 +138,30 @@ int RunEvalFaults(const EvalFaultsOptions& opt) {
 
   const bool progress = isatty(fileno(stderr)) != 0;
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<eval::FaultRun> runs;
-  runs.reserve(static_cast<std::size_t>(opt.runs));
-  for (int i = 0; i < opt.runs; ++i) {
-    const std::uint64_t seed = opt.seed0 + static_cast<std::uint64_t>(i);
-    runs.push_back(eval::RunFaulted(scenario, models, docking::Method::kContinuous, seed, config));
-    if (progress) {
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::fprintf(stderr, "\r[%d/%d] %.0f s", i + 1, opt.runs, elapsed);
-      if (i + 1 == opt.runs) std::fprintf(stderr, "\n");
+  // Runs are independent (each builds its own world, robot, detector and Docker from its seed),
+  // so --jobs threads take them in turn; run i always has seed seed0 + i, whatever the order.
+  std::vector<eval::FaultRun> runs(static_cast<std::size_t>(opt.runs));
+  std::atomic<int> next{0}, done{0};
+  std::mutex progress_mutex;
+  auto worker = [&] {
+    for (int i = next++; i < opt.runs; i = next++) {
+      const std::uint64_t seed = opt.seed0 + static_cast<std::uint64_t>(i);
+      runs[static_cast<std::size_t>(i)] =
+          eval::RunFaulted(scenario, models, docking::Method::kContinuous, seed, config);
+      const int finished = ++done;
+      if (progress) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::fprintf(stderr, "\r[%d/%d] %.0f s", finished, opt.runs, elapsed);
+        if (finished == opt.runs) std::fprintf(stderr, "\n");
+      }
     }
-  }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < opt.jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
   const eval::FaultSweepSummary s = eval::SummariseFaults(runs);
   if (opt.json) {
     std::cout << SummaryJson(s, runs).dump(2) << "\n";
@@ -178,6 +197,9 @@ void AddEvalFaultsCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--lidar", opt->lidar, "LiDAR config YAML (default: the WLR-716's defaults)");
   cmd->add_option("--robot", opt->robot, "robot config YAML (default: config/robot.yaml's values)");
   cmd->add_flag("--json", opt->json, "print one JSON summary instead of the table");
+  cmd->add_option("--jobs", opt->jobs,
+                  "runs in parallel (threads); the results do not depend on it")
+      ->capture_default_str();
   cmd->callback([opt, exit_code] { *exit_code = RunEvalFaults(*opt); });
 }
 

@@ -46,6 +46,7 @@ struct ScriptedRun {
   int marker_id = 2;     ///< the code under the shelf
   bool scans_on = true;  ///< false: the LiDAR delivers nothing
   bool camera_sees = true;
+  Pose2 T_map_world_error;                      ///< localisation error (identity: perfect)
   std::function<void(ScriptedRun*)> each_step;  ///< lets a test push the robot
 
   std::vector<Phase> phases;  ///< each phase once, in the order entered
@@ -83,7 +84,7 @@ struct ScriptedRun {
       Observations obs;
       obs.t_s = t_s;
       obs.T_odom_base = T_world_base;
-      obs.T_map_base_estimate = T_world_base;
+      obs.T_map_base_estimate = T_map_world_error * T_world_base;
       scan.stamp = t_s - scan_period_s;
       scan.time_increment = 0.0;
       if (scans_on && t_s + 1e-9 >= next_scan) {
@@ -258,6 +259,24 @@ TEST(Docker, ALidarSilentForAWhileStopsTheRobotAndDocksWhenScansReturn) {
   EXPECT_TRUE(run.Event("lidar_back"));
   ASSERT_TRUE(stopped_at.has_value());
   EXPECT_LT(moved_while_stopped_m, 1e-6);
+}
+
+// Issue 10 (eval faults): the localisation estimate jumping 0.3 m sideways during the approach
+// put the robot "off the approach path" (max_cross_track_m 0.25 m) and ended the attempt as
+// tracking_failed; now it stops, plans the approach again from the new estimate and docks.
+TEST(Docker, ALocalisationJumpOnTheApproachIsReplannedAndDocks) {
+  ScriptedRun run;
+  run.T_world_base = Pose2(-2.5, 1.0, 0.0);  // 3 m of approach before the docking area
+  run.each_step = [](ScriptedRun* r) {
+    if (r->docker->phase() == Phase::kApproach && r->T_world_base.x > -1.5) {
+      r->T_map_world_error = Pose2(0.0, 0.3, 0.0);
+    }
+  };
+  const Outcome outcome = run.Run();
+  EXPECT_TRUE(outcome.ok()) << outcome.reason;
+  std::string events;
+  for (const auto& e : run.events) events += e + "\n";
+  EXPECT_TRUE(run.Event("approach_off_path")) << events;
 }
 
 TEST(Docker, AnotherCodeIsWrongShelf) {
