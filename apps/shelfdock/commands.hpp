@@ -23,5 +23,6 @@ void AddViewCommand(CLI::App& app, int* exit_code);   ///< view: records -> repl
 void AddEvalCommands(CLI::App& app, int* exit_code);
 void AddEvalPaperCommand(CLI::App& eval, int* exit_code);
 void AddEvalPeersCommand(CLI::App& eval, int* exit_code);
+void AddEvalFaultsCommand(CLI::App& app, int* exit_code);  ///< eval faults
 
 }  // namespace shelfdock::app

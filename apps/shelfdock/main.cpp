@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   shelfdock::app::AddDockCommands(app, &exit_code);
   shelfdock::app::AddViewCommand(app, &exit_code);
   shelfdock::app::AddEvalCommands(app, &exit_code);
+  shelfdock::app::AddEvalFaultsCommand(app, &exit_code);
 
   try {
     app.parse(argc, argv);

@@ -131,6 +131,7 @@ class Docker {
     double last_scan_t = 0.0;
     double last_detection_t = 0.0;
     double blocked_since_t = -1.0;
+    bool lidar_silent = false;  ///< stopped: no scan for scan_timeout_s
     int replans = 0;
     std::string replan_failure;
   };

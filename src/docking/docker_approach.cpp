@@ -229,8 +229,13 @@ void Docker::StepApproach(const Observations& obs, double dt, Command* cmd) {
     case Step::kFollow: {
       const TrackingStatus s = follower_.Update(obs.T_map_base_estimate, dt);
       if (s.lost) {
-        Fail(OutcomeCode::kTrackingFailed,
-             "the robot left the approach path by " + Fmt(s.cross_track_m) + " m", cmd);
+        // Off the approach path by more than max_cross_track_m, most likely because the
+        // localisation estimate jumped: stop and plan again from where it now says the robot is
+        // (max_approach_plans bounds the plans). Docking itself runs on odometry and the scans.
+        cmd->events.push_back("approach_off_path: " + Fmt(s.cross_track_m) +
+                              " m off the approach path; re-planning");
+        approach_.step = Step::kPlan;
+        cmd->velocity = BrakeCommand(dt);
         return;
       }
       if (!s.reached) {

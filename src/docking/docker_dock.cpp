@@ -168,10 +168,27 @@ void Docker::StepDock(const Observations& obs, Command* cmd) {
     ProcessScan(obs, dock_.lidar_in_use, cmd);
     if (phase_ != Phase::kDock) return;
   }
-  if (dock_.lidar_in_use && obs.t_s - dock_.last_scan_t > config_.scan_timeout_s) {
-    Fail(OutcomeCode::kDetectionLost,
-         "no LiDAR scan for " + Fmt(obs.t_s - dock_.last_scan_t, 2) + " s while docking", cmd);
+  // A silent LiDAR stops the robot until its scans return (a blackout of a second leaves docking
+  // possible); silent for detection_lost_s, it is dead and the shelf lost.
+  const double silent_s = obs.t_s - dock_.last_scan_t;
+  if (dock_.lidar_in_use && silent_s > config_.detection_lost_s) {
+    Fail(OutcomeCode::kDetectionLost, "no LiDAR scan for " + Fmt(silent_s, 2) + " s while docking",
+         cmd);
     return;
+  }
+  if (dock_.lidar_in_use && silent_s > config_.scan_timeout_s) {
+    if (!dock_.lidar_silent) {
+      dock_.lidar_silent = true;
+      cmd->events.push_back("lidar_silent: no scan for " + Fmt(silent_s, 2) +
+                            " s, stopping until scans return");
+    }
+    cmd->velocity = BrakeCommand(dt);
+    return;
+  }
+  if (dock_.lidar_silent) {
+    dock_.lidar_silent = false;
+    follower_.SetPath(follower_.path(), config_.controller.max_speed_mps, 0.0, last_v_cmd_);
+    cmd->events.push_back("lidar_back");
   }
   if (dock_.lidar_in_use && tracker_.has_detection() &&
       obs.t_s - dock_.last_detection_t > config_.detection_lost_s) {

@@ -49,7 +49,8 @@ void Docker::GuideByCode(const Observations& obs, Command* cmd) {
   const double remaining_m = -(T_odom_goal_.inverse() * obs.T_odom_base).x;
   if (remaining_m < g.min_remaining_m) return;
   const Pose2 diff = T_odom_goal_.inverse() * goal;
-  if (std::hypot(diff.x, diff.y) <= g.replan_xy_m && std::abs(diff.yaw) <= g.replan_yaw_rad) return;
+  if (std::hypot(diff.x, diff.y) <= g.correct_xy_m && std::abs(diff.yaw) <= g.correct_yaw_rad)
+    return;
   // A short Bezier straight onto the corrected goal: no final straight is left at this point,
   // and the curvature bound is the tracker's (slow speed), not the approach's.
   PlannerConfig planner = config_.planner;

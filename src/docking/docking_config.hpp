@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/pose2.hpp"
 
 namespace shelfdock::docking {
@@ -98,8 +99,10 @@ struct CameraGuideConfig {
   double camera_on_m = 0.3;        ///< [m] remaining path below which the camera looks
   int frames = 1;                  ///< code readings averaged before the first correction
   double min_remaining_m = 0.012;  ///< [m] no new correction closer to the goal than this
-  double replan_xy_m = 0.0005;     ///< [m] goal change (code vs current goal) to correct
-  double replan_yaw_rad = 0.001;   ///< [rad]
+  // Not DockingConfig::replan_xy_m (the LiDAR's re-plan threshold); this was also called
+  // replan_xy_m, and YAML files that still say camera_guide.replan_xy_m get an error naming it.
+  double correct_xy_m = 0.0005;    ///< [m] goal change (code vs current goal) to correct
+  double correct_yaw_rad = 0.001;  ///< [rad]
   double max_curvature_1pm = 8.0;  ///< [1/m] curvature bound of the short correcting path
 };
 
@@ -142,7 +145,7 @@ struct DockingConfig {
   double leg_max_bearing_rad = 2.2;  ///< [rad] legs beyond this bearing are not trusted
   double must_detect_by_m = 1.2;     ///< [m] remaining path by which the shelf must be found
   double detection_lost_s = 4.0;     ///< [s] no detection (or no scan) for this long -> lost
-  double scan_timeout_s = 0.5;       ///< [s] no scan at all for this long -> LiDAR dead
+  double scan_timeout_s = 0.5;       ///< [s] no scan for this long: stop until scans return
   double lift_timeout_s = 10.0;      ///< [s]
   double timeout_s = 90.0;           ///< [s] whole attempt
   double control_period_s = 0.02;    ///< [s] expected Step period (used for stopping)
@@ -150,7 +153,18 @@ struct DockingConfig {
                                      ///< the docking profile (max_decel_mps2), within the robot
 };
 
-/// Empty when valid, else "key: requirement" for the first bad value.
-std::optional<std::string> Validate(const DockingConfig& config);
+/// The rules of each struct, one function per struct covering every field: the first value that
+/// breaks one, with its key as in the YAML file (nested structs' keys under their field name,
+/// e.g. `planner.final_straight_m`). Fields without a range only need to be finite.
+using geometry::ConfigViolation;
+std::optional<ConfigViolation> FindConfigViolation(const PlannerConfig& config);
+std::optional<ConfigViolation> FindConfigViolation(const ControllerConfig& config);
+std::optional<ConfigViolation> FindConfigViolation(const ShelfTrackerConfig& config);
+std::optional<ConfigViolation> FindConfigViolation(const SafetyConfig& config);
+std::optional<ConfigViolation> FindConfigViolation(const VerifyConfig& config);
+std::optional<ConfigViolation> FindConfigViolation(const CameraGuideConfig& config);
+std::optional<ConfigViolation> FindConfigViolation(const BaselineConfig& config);
+/// The nested structs' rules, then the top-level fields and the rules across structs.
+std::optional<ConfigViolation> FindConfigViolation(const DockingConfig& config);
 
 }  // namespace shelfdock::docking

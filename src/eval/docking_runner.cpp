@@ -8,6 +8,7 @@
 #include "docking/docking_area.hpp"
 #include "docking/path_planner.hpp"
 #include "docking/path_tracker.hpp"
+#include "eval/fault_injector.hpp"
 #include "eval/known_map.hpp"
 #include "geometry/angle.hpp"
 #include "perception/detector.hpp"
@@ -130,7 +131,10 @@ DockingRun RunDocking(const sim::Scenario& scenario,
                             config.T_map_robot_start.value_or(scenario.T_map_robot_start), seed);
   const Pose2 T_base_lidar = dcfg.T_base_lidar;
   const double dt = dcfg.control_period_s;
-  sim::SensorRig sensors(config.lidar, config.camera, config.sensors, T_base_lidar, seed,
+  FaultInjector faults(config.fault, seed);
+  sim::SensorRigConfig sensor_config = config.sensors;
+  faults.ConfigureSensors(&sensor_config);
+  sim::SensorRig sensors(config.lidar, config.camera, sensor_config, T_base_lidar, seed,
                          robot.time_s());
   int last_path_version = 0;
   bool verify_seen = false;
@@ -145,9 +149,10 @@ DockingRun RunDocking(const sim::Scenario& scenario,
     obs.T_odom_base = robot.T_odom_base();
     obs.T_map_base_estimate = robot.T_map_base_estimate();
     obs.lift_done = robot.LiftDone();
-    const sim::SensorReadings readings =
+    sim::SensorReadings readings =
         sensors.Sense(scenario.world, robot, t, t - docker.docking_start_time(),
                       camera_on || docker.phase() == docking::Phase::kVerify);
+    faults.Apply(t, t - docker.docking_start_time(), &readings, &obs);
     obs.scan = readings.scan;
     obs.camera_frame = readings.camera_frame;
     if (readings.image) obs.marker = marker_detector.Detect(*readings.image, config.camera.camera);
@@ -245,6 +250,7 @@ DockingRun RunDocking(const sim::Scenario& scenario,
     robot.Step(cmd.velocity.v_mps, cmd.velocity.w_radps, dt);
   }
 
+  run.hung = !docker.done();
   run.outcome = docker.done() ? docker.outcome()
                               : docking::Outcome{docking::OutcomeCode::kTimeout,
                                                  "the simulation ran out of time"};

@@ -9,6 +9,7 @@
 #include "docking/docker.hpp"
 #include "docking/docking_config.hpp"
 #include "docking/path.hpp"
+#include "eval/fault.hpp"
 #include "perception/detector_config.hpp"
 #include "perception/marker_detector.hpp"
 #include "sim/diff_drive_robot.hpp"
@@ -35,6 +36,9 @@ struct RunConfig {
   bool keep_recognitions = false;
   /// Start here instead of the scenario's robot_start (a start-anywhere sweep).
   std::optional<geometry::Pose2> T_map_robot_start;
+  /// A fault injected between the sensors and the Docker (eval faults); its changes to the world
+  /// are the caller's (ApplyFaultToScenario). kNone: no fault.
+  FaultSpec fault;
 };
 
 /// The robot's final pose against the TRUE shelf centre in the shelf's goal frame.
@@ -100,6 +104,8 @@ struct DockingRun {
   int replans = 0;
   int detections = 0;
   double min_leg_clearance_m = 1e9;  ///< [m] true footprint to true legs over the whole run
+  /// The Docker had not ended when max_sim_time_s came (a hang; outcome kTimeout).
+  bool hung = false;
   PhaseTimes phases;
   std::vector<RecordFrame> record;
   std::vector<Recognition> recognitions;  ///< only with RunConfig::keep_recognitions

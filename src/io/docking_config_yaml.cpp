@@ -85,9 +85,12 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("camera_on_m", k.camera_on_m);
     f.Read("frames", k.frames);
     f.Read("min_remaining_m", k.min_remaining_m);
-    f.Read("replan_xy_m", k.replan_xy_m);
-    f.Read("replan_yaw_rad", k.replan_yaw_rad);
+    f.Read("correct_xy_m", k.correct_xy_m);
+    f.Read("correct_yaw_rad", k.correct_yaw_rad);
     f.Read("max_curvature_1pm", k.max_curvature_1pm);
+    // Renamed (the top-level replan_xy_m is the LiDAR's threshold, a different thing).
+    f.Renamed("replan_xy_m", "camera_guide.correct_xy_m");
+    f.Renamed("replan_yaw_rad", "camera_guide.correct_yaw_rad");
     f.RejectUnknown();
   }
   {
@@ -128,9 +131,9 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
   top.Read("timeout_s", c.timeout_s);
   top.Read("control_period_s", c.control_period_s);
   top.RejectUnknown();
-  if (const auto error = docking::Validate(c)) {
-    const auto colon = error->find(':');
-    throw InputError(path, error->substr(0, colon), error->substr(colon + 2));
+  // The rules live with the structs; here they only gain the file name.
+  if (const auto v = docking::FindConfigViolation(c)) {
+    throw InputError(path, v->key, "must be " + v->requirement);
   }
   return c;
 }

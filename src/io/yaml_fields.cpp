@@ -81,6 +81,13 @@ void YamlFields::Read(const std::string& key, std::string& value) {
 
 YAML::Node YamlFields::Child(const std::string& key) { return Lookup(key); }
 
+void YamlFields::Renamed(const std::string& old_key, const std::string& new_key_path) {
+  const YAML::Node v = Lookup(old_key);
+  if (v.IsDefined()) {
+    throw InputError(file_, KeyPath(old_key), "renamed: write " + new_key_path + " instead");
+  }
+}
+
 void YamlFields::Require(bool ok, const std::string& key, const std::string& requirement) const {
   if (!ok) throw InputError(file_, KeyPath(key), "must be " + requirement);
 }

@@ -29,6 +29,10 @@ class YamlFields {
   /// A nested map under `key` (an undefined node when absent), marked as known.
   YAML::Node Child(const std::string& key);
 
+  /// Throws InputError when the map still has `old_key`, naming the key that replaced it
+  /// (`new_key_path`, dotted from the document's root).
+  void Renamed(const std::string& old_key, const std::string& new_key_path);
+
   /// Throws InputError when `ok` is false, naming `key` and the requirement.
   void Require(bool ok, const std::string& key, const std::string& requirement) const;
 

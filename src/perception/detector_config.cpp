@@ -3,24 +3,9 @@
 #include <numbers>
 
 namespace shelfdock::perception {
-namespace {
-
-// Collects the first failed rule; later checks are skipped once one failed.
-class Checker {
- public:
-  void Check(bool ok, const char* key, const char* requirement) {
-    if (!ok && !violation_) violation_ = ConfigViolation{key, requirement};
-  }
-  std::optional<ConfigViolation> Result() const { return violation_; }
-
- private:
-  std::optional<ConfigViolation> violation_;
-};
-
-}  // namespace
 
 std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
-  Checker k;
+  geometry::ConfigChecker k;
   const auto& p = c.preprocess;
   k.Check(p.roi_gamma > 0.5, "preprocess.roi_gamma", "> 0.5 (the ROI must reach the legs)");
   k.Check(p.cluster_gap_m > 0.0, "preprocess.cluster_gap_m", "> 0");

@@ -3,6 +3,8 @@
 #include <optional>
 #include <string>
 
+#include "geometry/config_violation.hpp"
+
 namespace shelfdock::perception {
 
 /// Paper 3.1: ranges to points, region of interest, clustering, trailing points, size screening.
@@ -99,10 +101,7 @@ struct DetectorConfig {
 };
 
 /// An impossible parameter: its dotted key (e.g. `preprocess.cluster_gap_m`) and the rule.
-struct ConfigViolation {
-  std::string key;
-  std::string requirement;
-};
+using ConfigViolation = geometry::ConfigViolation;
 
 /// The first impossible value in `config`, if any. The single place the rules live: the
 /// Detector constructor throws on it and the YAML loader reports it with the file name.

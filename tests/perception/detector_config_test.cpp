@@ -1,0 +1,129 @@
+// One test per detector config rule (src/perception/detector_config.cpp): the default config
+// passes, and breaking exactly that rule is reported with exactly its key.
+#include "perception/detector_config.hpp"
+
+#include <functional>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace shelfdock::perception {
+namespace {
+
+struct RuleCase {
+  std::string name;  ///< test name
+  std::string key;   ///< the key the violation must name
+  std::function<void(DetectorConfig&)> breaks;
+};
+
+std::ostream& operator<<(std::ostream& os, const RuleCase& c) { return os << c.name; }
+
+const RuleCase kCases[] = {
+    {"roi_gamma", "preprocess.roi_gamma", [](auto& c) { c.preprocess.roi_gamma = 0.5; }},
+    {"cluster_gap", "preprocess.cluster_gap_m", [](auto& c) { c.preprocess.cluster_gap_m = 0.0; }},
+    {"cluster_gap_beams", "preprocess.cluster_gap_beams",
+     [](auto& c) { c.preprocess.cluster_gap_beams = -1.0; }},
+    {"cluster_missing", "preprocess.cluster_max_missing_beams",
+     [](auto& c) { c.preprocess.cluster_max_missing_beams = -1; }},
+    {"trailing_angle_negative", "preprocess.trailing_min_angle_rad",
+     [](auto& c) { c.preprocess.trailing_min_angle_rad = -0.1; }},
+    {"trailing_angle_right", "preprocess.trailing_min_angle_rad",
+     [](auto& c) { c.preprocess.trailing_min_angle_rad = std::numbers::pi / 2; }},
+    {"trailing_jump", "preprocess.trailing_min_jump_m",
+     [](auto& c) { c.preprocess.trailing_min_jump_m = -0.01; }},
+    {"leg_extent_margin", "preprocess.leg_extent_margin_m",
+     [](auto& c) { c.preprocess.leg_extent_margin_m = -0.01; }},
+    {"min_points", "preprocess.min_points", [](auto& c) { c.preprocess.min_points = 0; }},
+    {"min_point_fraction_negative", "preprocess.min_point_fraction",
+     [](auto& c) { c.preprocess.min_point_fraction = -0.1; }},
+    {"min_point_fraction_above_one", "preprocess.min_point_fraction",
+     [](auto& c) { c.preprocess.min_point_fraction = 1.1; }},
+    {"pair_tolerance", "leg_search.pair_tolerance_m",
+     [](auto& c) { c.leg_search.pair_tolerance_m = 0.0; }},
+    {"pythagoras_tolerance", "leg_search.pythagoras_tolerance_m",
+     [](auto& c) { c.leg_search.pythagoras_tolerance_m = 0.0; }},
+    {"fourth_leg_radius", "leg_search.fourth_leg_radius_m",
+     [](auto& c) { c.leg_search.fourth_leg_radius_m = 0.0; }},
+    {"max_leg_sets", "leg_search.max_leg_sets", [](auto& c) { c.leg_search.max_leg_sets = 0; }},
+    {"gamma_L", "model_match.gamma_L_m", [](auto& c) { c.model_match.gamma_L_m = 0.0; }},
+    {"gamma_W", "model_match.gamma_W_m", [](auto& c) { c.model_match.gamma_W_m = 0.0; }},
+    {"gamma_sum", "model_match.gamma_sum_m", [](auto& c) { c.model_match.gamma_sum_m = 0.0; }},
+    {"lambda", "model_match.lambda_m", [](auto& c) { c.model_match.lambda_m = -0.01; }},
+    {"three_leg_err_sum", "model_match.three_leg_err_sum_m",
+     [](auto& c) { c.model_match.three_leg_err_sum_m = 0.0; }},
+    {"leg_fit_loss", "leg_fit.loss_scale_m", [](auto& c) { c.leg_fit.loss_scale_m = 0.0; }},
+    {"leg_fit_prior", "leg_fit.prior_weight", [](auto& c) { c.leg_fit.prior_weight = -0.1; }},
+    {"leg_fit_range_sigma", "leg_fit.range_sigma_m",
+     [](auto& c) { c.leg_fit.range_sigma_m = 0.0; }},
+    {"leg_fit_silhouette_sigma", "leg_fit.silhouette_sigma_beams",
+     [](auto& c) { c.leg_fit.silhouette_sigma_beams = 0.0; }},
+    {"leg_fit_pca_points", "leg_fit.pca_min_points", [](auto& c) { c.leg_fit.pca_min_points = 1; }},
+    {"leg_fit_pca_anisotropy", "leg_fit.pca_min_anisotropy",
+     [](auto& c) { c.leg_fit.pca_min_anisotropy = 0.9; }},
+    {"leg_fit_iterations", "leg_fit.max_iterations", [](auto& c) { c.leg_fit.max_iterations = 0; }},
+    {"shelf_fit_loss", "shelf_fit.loss_scale_m", [](auto& c) { c.shelf_fit.loss_scale_m = 0.0; }},
+    {"shelf_fit_iterations", "shelf_fit.max_iterations",
+     [](auto& c) { c.shelf_fit.max_iterations = 0; }},
+    {"shelf_fit_radial_sigma", "shelf_fit.leg_radial_sigma_m",
+     [](auto& c) { c.shelf_fit.leg_radial_sigma_m = 0.0; }},
+    {"shelf_fit_bearing_sigma", "shelf_fit.leg_bearing_sigma_rad",
+     [](auto& c) { c.shelf_fit.leg_bearing_sigma_rad = 0.0; }},
+    {"shelf_fit_min_sigma", "shelf_fit.min_leg_sigma_m",
+     [](auto& c) { c.shelf_fit.min_leg_sigma_m = 0.0; }},
+    {"shelf_fit_max_rms", "shelf_fit.max_rms_m", [](auto& c) { c.shelf_fit.max_rms_m = 0.0; }},
+    {"present_margin", "evidence.present_margin_m",
+     [](auto& c) { c.evidence.present_margin_m = 0.0; }},
+    {"through_margin", "evidence.through_margin_m",
+     [](auto& c) { c.evidence.through_margin_m = 0.0; }},
+    {"through_beams", "evidence.min_through_beams",
+     [](auto& c) { c.evidence.min_through_beams = 0; }},
+    {"leg_position_tolerance", "evidence.leg_position_tolerance_m",
+     [](auto& c) { c.evidence.leg_position_tolerance_m = -0.001; }},
+    {"interior_margin", "evidence.interior_margin_m",
+     [](auto& c) { c.evidence.interior_margin_m = -0.01; }},
+    {"occluded_credit_negative", "evidence.occluded_credit",
+     [](auto& c) { c.evidence.occluded_credit = -0.1; }},
+    {"occluded_credit_above_one", "evidence.occluded_credit",
+     [](auto& c) { c.evidence.occluded_credit = 1.1; }},
+    {"unobserved_credit_negative", "evidence.unobserved_credit",
+     [](auto& c) { c.evidence.unobserved_credit = -0.1; }},
+    {"unobserved_credit_above_one", "evidence.unobserved_credit",
+     [](auto& c) { c.evidence.unobserved_credit = 1.1; }},
+    {"fit_scale", "evidence.fit_scale_m", [](auto& c) { c.evidence.fit_scale_m = 0.0; }},
+    {"interior_scale", "evidence.interior_scale_points",
+     [](auto& c) { c.evidence.interior_scale_points = 0.0; }},
+    {"foreign_leg_points", "evidence.foreign_leg_points",
+     [](auto& c) { c.evidence.foreign_leg_points = -1.0; }},
+    {"object_point_weight", "evidence.object_point_weight",
+     [](auto& c) { c.evidence.object_point_weight = -0.1; }},
+    {"leg_size_margin", "evidence.leg_size_margin_m",
+     [](auto& c) { c.evidence.leg_size_margin_m = -0.01; }},
+    {"leg_width_slack", "evidence.leg_width_slack_m",
+     [](auto& c) { c.evidence.leg_width_slack_m = -0.01; }},
+    {"leg_width_scale", "evidence.leg_width_scale_m",
+     [](auto& c) { c.evidence.leg_width_scale_m = 0.0; }},
+    {"min_confidence_negative", "evidence.min_confidence",
+     [](auto& c) { c.evidence.min_confidence = -0.1; }},
+    {"min_confidence_one", "evidence.min_confidence",
+     [](auto& c) { c.evidence.min_confidence = 1.0; }},
+};
+
+TEST(DetectorConfigTest, DefaultsPass) { EXPECT_FALSE(FindConfigViolation(DetectorConfig{})); }
+
+class DetectorConfigRuleTest : public ::testing::TestWithParam<RuleCase> {};
+
+TEST_P(DetectorConfigRuleTest, BreakingTheRuleNamesItsKey) {
+  DetectorConfig config;
+  GetParam().breaks(config);
+  const auto v = FindConfigViolation(config);
+  ASSERT_TRUE(v.has_value()) << "no violation reported";
+  EXPECT_EQ(v->key, GetParam().key) << v->requirement;
+  EXPECT_FALSE(v->requirement.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryRule, DetectorConfigRuleTest, ::testing::ValuesIn(kCases),
+                         [](const auto& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace shelfdock::perception
