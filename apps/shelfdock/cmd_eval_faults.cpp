@@ -18,7 +18,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
+#include "config_paths.hpp"
 #include "eval/fault_sweep.hpp"
 #include "io/docking_config_yaml.hpp"
 #include "io/input_error.hpp"
@@ -33,8 +35,8 @@ namespace {
 struct EvalFaultsOptions {
   int runs = 1000;
   std::uint64_t seed0 = 1;
-  std::string scenario = "config/scenarios/paper_docking.yaml";
-  std::string models = "config/models.yaml";
+  std::string scenario = DefaultConfig("scenarios/paper_docking.yaml");
+  std::string models = DefaultConfig("models.yaml");
   std::string config;
   std::string lidar;
   std::string robot;
@@ -123,7 +125,7 @@ void PrintTable(const eval::FaultSweepSummary& s, const std::vector<eval::FaultR
 }
 
 int RunEvalFaults(const EvalFaultsOptions& opt) {
-  if (opt.runs < 1) throw io::InputError("(command line)", "--runs", "must be >= 1");
+  if (opt.runs < 1) throw io::InputError(kCommandLine, "--runs", "must be >= 1");
   if (opt.jobs < 1 || opt.jobs > 64) {
     throw io::InputError("(command line)", "--jobs", "must be in 1..64");
   }
@@ -190,7 +192,9 @@ void AddEvalFaultsCommand(CLI::App& app, int* exit_code) {
       "N seeded dockings, each with one random fault: success and typed failures per fault; "
       "exit 1 if a leg was touched, a run hung or ended against the rule");
   cmd->add_option("--runs", opt->runs, "dockings, one fault each")->capture_default_str();
-  cmd->add_option("--seed0", opt->seed0, "first seed")->capture_default_str();
+  cmd->add_option("--seed0", opt->seed0, "first seed")
+      ->capture_default_str()
+      ->check(NonNegativeInteger());
   cmd->add_option("--scenario", opt->scenario, "scenario YAML")->capture_default_str();
   cmd->add_option("--models", opt->models, "shelf models YAML")->capture_default_str();
   cmd->add_option("--config", opt->config, "docking config YAML (e.g. config/docking.yaml)");

@@ -43,6 +43,7 @@ struct FinalErrorSummary {
   AbsErrorStats after_x, after_y, after_yaw;  ///< after the code check and adjustment
 };
 
+/// The docking experiment of one sensor: Fig. 7 spreads, Fig. 8 errors and the times.
 struct DockingExperimentResult {
   int runs = 0;
   int continuous_successes = 0;

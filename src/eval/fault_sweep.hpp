@@ -47,6 +47,8 @@ struct FaultSweepSummary {
   std::vector<FaultKindSummary> kinds;  ///< in AllFaultKinds() order, kinds with runs only
 };
 
+/// Counts per fault kind and over all runs: successes, typed failures, contacts, hangs, rule
+/// violations.
 FaultSweepSummary SummariseFaults(const std::vector<FaultRun>& runs);
 
 }  // namespace shelfdock::eval

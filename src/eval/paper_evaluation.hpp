@@ -27,6 +27,7 @@ struct PaperSensorResult {
   DockingExperimentResult docking;  ///< Fig. 7, Fig. 8, time
 };
 
+/// Every figure of `eval paper`: its configuration and one result per sensor (nominal, harsh).
 struct PaperEvaluation {
   PaperEvaluationConfig config;
   std::vector<PaperSensorResult> sensors;  ///< nominal, then harsh

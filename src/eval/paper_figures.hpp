@@ -14,6 +14,7 @@ struct PaperTable1Row {
   double width_error;   ///< [-]
 };
 
+/// The paper's Table 1: fitted length and width and their errors per model.
 inline constexpr std::array<PaperTable1Row, 4> kPaperTable1 = {{
     {"t1-round-900x810", 0.903, 0.8239, 0.003, 0.017},
     {"t1-rect-1075x883", 1.0801, 0.9194, 0.0047, 0.041},

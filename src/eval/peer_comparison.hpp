@@ -18,8 +18,10 @@ enum class PeerMethod {
   kCentroid,   ///< peers::CentroidPeerDetect: no leg fit (3.3), no shelf fit (3.4)
   kCorner,     ///< peers::CornerPeerDetect: corner finding as open ROS shelf detectors
 };
+/// Every method `eval peers` compares, shelfdock first.
 inline constexpr PeerMethod kAllPeerMethods[] = {PeerMethod::kShelfdock, PeerMethod::kCentroid,
                                                  PeerMethod::kCorner};
+/// The method's name in tables and JSON.
 std::string_view PeerMethodName(PeerMethod method);
 
 /// What counts as a success.
@@ -28,6 +30,7 @@ struct PeerScoring {
                                    ///< its model the target's
 };
 
+/// Median and 95th percentile of a sample (NaN when empty).
 struct Quantiles {
   double p50 = std::numeric_limits<double>::quiet_NaN();
   double p95 = std::numeric_limits<double>::quiet_NaN();

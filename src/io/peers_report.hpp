@@ -13,7 +13,9 @@
 
 namespace shelfdock::io {
 
+/// Markdown table: accuracy and time per scan for each scene set and method.
 std::vector<std::string> PeerTableLines(const std::vector<eval::PeerRow>& rows);
+/// Markdown table: leg-search checks and time, pruned against exhaustive, per scene set.
 std::vector<std::string> SearchTableLines(const std::vector<eval::SearchRow>& rows);
 /// {"accuracy": [{"set", "method", "scenes", "successes", "success_rate", "position_m": {p50,
 /// p95}, "heading_rad", "time_s", "ratio_to_shelfdock": {"position_p95", "heading_p95",

@@ -16,14 +16,27 @@ def help_text(binary, *args):
     return subprocess.run([binary, *args, "--help"], capture_output=True, text=True, check=True).stdout
 
 
+def children(text):
+    """The subcommands a --help text lists (none when it lists none)."""
+    for marker in ("Subcommands:", "SUBCOMMANDS:"):
+        if marker in text:
+            section = text.split(marker, 1)[1]
+            return [m.group(1) for m in re.finditer(r"^\s{2}([a-z][a-z0-9-]*)\s", section, re.M)]
+    return []
+
+
 def subcommands(binary):
-    text = help_text(binary)
-    section = text.split("Subcommands:", 1)[1] if "Subcommands:" in text else text.split("SUBCOMMANDS:", 1)[1]
-    return [m.group(1) for m in re.finditer(r"^\s{2}([a-z][a-z0-9-]*)\s", section, re.M)]
+    """Every command line's subcommand path: "detect", ..., and "eval paper" for nested ones."""
+    found = []
+    for sub in children(help_text(binary)):
+        nested = children(help_text(binary, sub))
+        found.extend(f"{sub} {child}" for child in nested) if nested else found.append(sub)
+    return found
 
 
 def options(binary, sub):
-    found = set(re.findall(r"^\s{2}(?:-\w,)?(--[a-z0-9][a-z0-9-]*)", help_text(binary, sub), re.M))
+    text = help_text(binary, *sub.split())
+    found = set(re.findall(r"^\s{2}(?:-\w,)?(--[a-z0-9][a-z0-9-]*)", text, re.M))
     found.discard("--help")
     return found
 
@@ -34,7 +47,7 @@ def readme_rows(readme):
     cli = text.split("\n## CLI", 1)[1].split("\n## ", 1)[0]
     rows = {}
     for line in cli.splitlines():
-        m = re.match(r"^\| `([a-z][a-z0-9-]*)([^`]*)` \|", line)
+        m = re.match(r"^\| `([a-z][a-z0-9-]*(?: [a-z][a-z0-9-]*)?)([^`]*)` \|", line)
         if m:
             rows.setdefault(m.group(1), []).append(m.group(1) + m.group(2))
     return rows
