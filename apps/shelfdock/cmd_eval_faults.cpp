@@ -2,11 +2,7 @@
 // reported per fault as the share of successes and of each typed failure, with the issue's
 // invariants counted: leg contacts, hangs, untyped ends, and runs against the rule of which
 // faults leave docking possible. Exit 0 when every count is zero, 1 otherwise, 2 on bad input.
-#include <unistd.h>
-
 #include <atomic>
-#include <chrono>
-#include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -28,6 +24,7 @@
 #include "io/models_yaml.hpp"
 #include "io/robot_yaml.hpp"
 #include "io/scenario_yaml.hpp"
+#include "progress.hpp"
 
 namespace shelfdock::app {
 namespace {
@@ -127,7 +124,7 @@ void PrintTable(const eval::FaultSweepSummary& s, const std::vector<eval::FaultR
 int RunEvalFaults(const EvalFaultsOptions& opt) {
   if (opt.runs < 1) throw io::InputError(kCommandLine, "--runs", "must be >= 1");
   if (opt.jobs < 1 || opt.jobs > 64) {
-    throw io::InputError("(command line)", "--jobs", "must be in 1..64");
+    throw io::InputError(kCommandLine, "--jobs", "must be in 1..64");
   }
   const auto models = io::ReadShelfModels(opt.models);
   const sim::Scenario scenario = io::ReadScenario(opt.scenario, models);
@@ -138,32 +135,28 @@ int RunEvalFaults(const EvalFaultsOptions& opt) {
   // Every run must end by the Docker's own time budget; the simulation stops a little after it.
   config.max_sim_time_s = config.docking.timeout_s + 30.0;
 
-  const bool progress = isatty(fileno(stderr)) != 0;
-  const auto t0 = std::chrono::steady_clock::now();
   // Runs are independent (each builds its own world, robot, detector and Docker from its seed),
   // so --jobs threads take them in turn; run i always has seed seed0 + i, whatever the order.
   std::vector<eval::FaultRun> runs(static_cast<std::size_t>(opt.runs));
-  std::atomic<int> next{0}, done{0};
-  std::mutex progress_mutex;
-  auto worker = [&] {
-    for (int i = next++; i < opt.runs; i = next++) {
-      const std::uint64_t seed = opt.seed0 + static_cast<std::uint64_t>(i);
-      runs[static_cast<std::size_t>(i)] =
-          eval::RunFaulted(scenario, models, docking::Method::kContinuous, seed, config);
-      const int finished = ++done;
-      if (progress) {
+  std::atomic<int> next{0};
+  int done = 0;
+  {  // the progress line is cleared when it goes, before the table is printed
+    std::mutex progress_mutex;
+    Progress progress("eval faults", opt.runs);
+    auto worker = [&] {
+      for (int i = next++; i < opt.runs; i = next++) {
+        const std::uint64_t seed = opt.seed0 + static_cast<std::uint64_t>(i);
+        runs[static_cast<std::size_t>(i)] =
+            eval::RunFaulted(scenario, models, docking::Method::kContinuous, seed, config);
         const std::lock_guard<std::mutex> lock(progress_mutex);
-        const double elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        std::fprintf(stderr, "\r[%d/%d] %.0f s", finished, opt.runs, elapsed);
-        if (finished == opt.runs) std::fprintf(stderr, "\n");
+        progress.Update(++done);
       }
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int j = 1; j < opt.jobs; ++j) threads.emplace_back(worker);
-  worker();
-  for (std::thread& t : threads) t.join();
+    };
+    std::vector<std::thread> threads;
+    for (int j = 1; j < opt.jobs; ++j) threads.emplace_back(worker);
+    worker();
+    for (std::thread& t : threads) t.join();
+  }
   const eval::FaultSweepSummary s = eval::SummariseFaults(runs);
   if (opt.json) {
     std::cout << SummaryJson(s, runs).dump(2) << "\n";
