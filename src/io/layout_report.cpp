@@ -104,7 +104,7 @@ nlohmann::json FirstJson(const std::optional<eval::FirstDetection>& first,
   return j;
 }
 
-nlohmann::json FailureJson(const eval::LayoutSceneResult& r) {
+nlohmann::json SceneJson(const eval::LayoutSceneResult& r) {
   return {{"class", std::string(sim::LayoutClassName(r.layout_class))},
           {"seed", r.seed},
           {"lidar", r.lidar_name},
@@ -197,8 +197,8 @@ nlohmann::json LayoutSweepJson(const std::vector<eval::LayoutSummary>& rows,
   nlohmann::json failures = nlohmann::json::array();
   nlohmann::json all = nlohmann::json::array();
   for (const auto& s : scenes) {
-    if (s.Failed()) failures.push_back(FailureJson(s));
-    all.push_back(FailureJson(s));
+    all.push_back(SceneJson(s));
+    if (s.Failed()) failures.push_back(all.back());
   }
   return {{"scenes_per_class", config.scenes_per_class},
           {"seed0", config.seed0},

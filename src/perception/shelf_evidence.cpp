@@ -111,12 +111,13 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       // Leg size: a post, a person's leg or a box corner is wider than the model's leg.
       const double expected = LegSilhouetteWidth(model.leg, T_lidar_shelf.yaw, c.centroid);
       // One beam either way at the edges, plus the blur of the beam's footprint.
-      const double slack = c.centroid.norm() * alpha + config.leg_width_slack_m;
+      const double beam = c.centroid.norm() * alpha;  // one beam's spacing at the leg
+      const double slack = beam + config.leg_width_slack_m;
       const double seen = SeenWidth(c, alpha);
       ev.leg_width_error_m =
           std::max(ev.leg_width_error_m, std::max(0.0, std::abs(seen - expected) - slack));
       width_bias_sum += seen - expected;
-      beam_sum += c.centroid.norm() * alpha;
+      beam_sum += beam;
       ++width_count;
       continue;
     }
