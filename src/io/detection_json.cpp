@@ -60,7 +60,8 @@ nlohmann::json DetectionStatsToJson(const perception::DetectionStats& s) {
             {"three_leg_error", s.rejected.three_leg_error},
             {"leg_seen_through", s.rejected.leg_seen_through},
             {"low_confidence", s.rejected.low_confidence},
-            {"lost_legs", s.rejected.lost_legs}}}};
+            {"lost_legs", s.rejected.lost_legs},
+            {"off_preset", s.rejected.off_preset}}}};
 }
 
 nlohmann::json HypothesisToJson(const perception::HypothesisRecord& h) {

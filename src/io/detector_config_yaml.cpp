@@ -77,6 +77,12 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.RejectUnknown();
 }
 
+void ReadPresetGate(YamlFields f, perception::PresetGateConfig& c) {
+  f.Read("max_offset_m", c.max_offset_m);
+  f.Read("max_yaw_offset_rad", c.max_yaw_offset_rad);
+  f.RejectUnknown();
+}
+
 }  // namespace
 
 perception::DetectorConfig ReadDetectorConfig(const std::string& path) {
@@ -89,6 +95,7 @@ perception::DetectorConfig ReadDetectorConfig(const std::string& path) {
   ReadLegFit(YamlFields(top.Child("leg_fit"), path, "leg_fit"), config.leg_fit);
   ReadShelfFit(YamlFields(top.Child("shelf_fit"), path, "shelf_fit"), config.shelf_fit);
   ReadEvidence(YamlFields(top.Child("evidence"), path, "evidence"), config.evidence);
+  ReadPresetGate(YamlFields(top.Child("preset_gate"), path, "preset_gate"), config.preset_gate);
   top.RejectUnknown();
   // The rules live with the struct; here they only gain the file name.
   if (const auto v = perception::FindConfigViolation(config)) {

@@ -40,6 +40,8 @@ struct RejectionCounts {
   int leg_seen_through = 0;  ///< beams pass where a leg of the hypothesis should stand
   int low_confidence = 0;    ///< the evidence is too weak (confidence < min_confidence)
   int lost_legs = 0;         ///< its legs went to a better-supported shelf (or a better model)
+  int off_preset = 0;        ///< won its legs, but stands too far from (or turned against) the
+                             ///< preset: a neighbour or clutter, not the expected shelf
 };
 
 /// Counters that tell where candidates were dropped; useful when tuning on real scans.
@@ -64,6 +66,7 @@ enum class Verdict {
   kLegSeenThrough,  ///< RejectionCounts::leg_seen_through
   kLowConfidence,   ///< RejectionCounts::low_confidence
   kLostLegs,        ///< RejectionCounts::lost_legs
+  kOffPreset,       ///< RejectionCounts::off_preset
 };
 /// The verdict's snake_case name, as in `detect --explain` and `stats.rejected`.
 const char* VerdictName(Verdict verdict);

@@ -78,6 +78,9 @@ void Count(Verdict verdict, RejectionCounts& rejected) {
     case Verdict::kLostLegs:
       ++rejected.lost_legs;
       break;
+    case Verdict::kOffPreset:
+      ++rejected.off_preset;
+      break;
     case Verdict::kReturned:
       break;
   }
@@ -162,6 +165,19 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   return h;
 }
 
+// The preset gate (PresetGateConfig): the paper picks the detection nearest the preset; a shelf
+// that is neither near it nor turned like it is not the one the map expects there.
+bool NearPreset(const Detection& d, const geometry::Pose2& preset, const PresetGateConfig& gate) {
+  if (gate.max_offset_m > 0.0 &&
+      (d.T_lidar_shelf.translation() - preset.translation()).norm() > gate.max_offset_m) {
+    return false;
+  }
+  if (gate.max_yaw_offset_rad <= 0.0) return true;
+  // d's heading is already resolved toward the preset's (ResolveHeading), so the remaining
+  // difference is the true one modulo the shelf's symmetry.
+  return std::abs(geometry::AngleDiff(preset.yaw, d.T_lidar_shelf.yaw)) <= gate.max_yaw_offset_rad;
+}
+
 }  // namespace
 
 const char* VerdictName(Verdict verdict) {
@@ -180,6 +196,8 @@ const char* VerdictName(Verdict verdict) {
       return "low_confidence";
     case Verdict::kLostLegs:
       return "lost_legs";
+    case Verdict::kOffPreset:
+      return "off_preset";
   }
   return "unknown";
 }
@@ -290,10 +308,12 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     const bool won = std::find(picked.begin(), picked.end(), static_cast<int>(i)) != picked.end();
     if (!won) {
       h.record.verdict = Verdict::kLostLegs;
-      Count(h.record.verdict, stats.rejected);
+    } else if (T_lidar_preset && !NearPreset(h.detection, *T_lidar_preset, config_.preset_gate)) {
+      h.record.verdict = Verdict::kOffPreset;
     }
+    Count(h.record.verdict, stats.rejected);
     if (explain) result.hypotheses.push_back(h.record);
-    if (won) kept.push_back(std::move(h.detection));
+    if (h.record.verdict == Verdict::kReturned) kept.push_back(std::move(h.detection));
   }
   // Ranking: with a preset, nearest to it first (paper 3.2); otherwise the most confident.
   std::stable_sort(kept.begin(), kept.end(), [&](const Detection& a, const Detection& b) {

@@ -69,6 +69,10 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.leg_width_scale_m > 0.0, "evidence.leg_width_scale_m", "> 0");
   k.Check(e.min_confidence >= 0.0 && e.min_confidence < 1.0, "evidence.min_confidence",
           "in [0, 1)");
+
+  const auto& g = c.preset_gate;
+  k.Check(g.max_offset_m >= 0.0, "preset_gate.max_offset_m", ">= 0 (0: off)");
+  k.Check(g.max_yaw_offset_rad >= 0.0, "preset_gate.max_yaw_offset_rad", ">= 0 (0: off)");
   return k.Result();
 }
 

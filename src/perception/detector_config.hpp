@@ -90,6 +90,17 @@ struct EvidenceConfig {
   double min_confidence = 0.3;           ///< [-] below this a hypothesis is not returned
 };
 
+/// How far a returned shelf may stand from the preset (the pose the map expects it at). The
+/// preset is the paper's prior; a shelf well away from it, or turned against it, is a neighbour
+/// or clutter that happens to fit a model, not the one the robot was sent to. Hypotheses outside
+/// still compete for legs (a phantom near the preset loses to the neighbours it borrows from),
+/// they are just not returned. With no preset nothing is gated.
+struct PresetGateConfig {
+  double max_offset_m = 0.5;         ///< [m] centre distance from the preset; 0 turns the gate off
+  double max_yaw_offset_rad = 0.35;  ///< [rad] heading difference modulo the shelf's symmetry
+                                     ///< (pi, or pi/2 for a square one); 0 turns it off
+};
+
 /// All detector parameters, one struct per stage (config/detector.yaml).
 struct DetectorConfig {
   PreprocessConfig preprocess;
@@ -98,6 +109,7 @@ struct DetectorConfig {
   LegFitConfig leg_fit;
   ShelfFitConfig shelf_fit;
   EvidenceConfig evidence;
+  PresetGateConfig preset_gate;
 };
 
 /// An impossible parameter: its dotted key (e.g. `preprocess.cluster_gap_m`) and the rule.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "geometry/angle.hpp"
 
@@ -100,6 +101,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   const auto corners = model.LegCentres();
   std::vector<int> own_spans, excused_spans;
   double width_bias_sum = 0.0;
+  std::array<double, 4> width_errors{};
   double beam_sum = 0.0;
   int width_count = 0;
   for (int k = 0; k < 4; ++k) {
@@ -114,8 +116,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       const double beam = c.centroid.norm() * alpha;  // one beam's spacing at the leg
       const double slack = beam + config.leg_width_slack_m;
       const double seen = SeenWidth(c, alpha);
-      ev.leg_width_error_m =
-          std::max(ev.leg_width_error_m, std::max(0.0, std::abs(seen - expected) - slack));
+      width_errors[k] = std::max(0.0, std::abs(seen - expected) - slack);
       width_bias_sum += seen - expected;
       beam_sum += beam;
       ++width_count;
@@ -131,6 +132,12 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     }
   }
   if (width_count > 0) {
+    // The worst leg width, except with four legs seen: there the geometry of four legs already
+    // vouches for the shelf, and one leg that looks wide is most often something touching it
+    // (a person's trouser leg, a box) merged into its cluster; a set of posts or box corners
+    // would have more than one wrong width. So the second worst counts then.
+    std::sort(width_errors.begin(), width_errors.end(), std::greater<>());  // unseen legs: 0
+    ev.leg_width_error_m = width_count == 4 ? width_errors[1] : width_errors[0];
     // One leg's width is quantised by a beam; the mean over three or four legs is not, so it
     // tells a shelf's legs from legs of another section (26 mm round legs taken for a 40 mm
     // square shelf's, posts of any size) where each width alone cannot.
@@ -173,6 +180,13 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     }
     ev.interior_points += inside;
     if (inside == 0 || span.extent_m > leg_extent + config.leg_size_margin_m) continue;
+    // Leg-sized also across the view: a person's leg (10-14 cm) seen side-on can be short in
+    // extent when only a few beams hit it, but its seen width gives it away. A foreign shelf
+    // leg is no wider than the widest silhouette of this model's leg plus the beam blur.
+    const double span_angle = std::abs(
+        geometry::AngleDiff(pre.points[span.end - 1].angle, pre.points[span.begin].angle));
+    const double seen_width = span.centroid.norm() * (span_angle + alpha);
+    if (seen_width > leg_extent + span.centroid.norm() * alpha + config.leg_width_slack_m) continue;
     if (s >= shelf_like_spans.size() || !shelf_like_spans[s]) continue;
     ev.interior_leg_points += inside;
     const Eigen::Vector2d c = R * span.centroid + t;

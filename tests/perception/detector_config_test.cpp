@@ -107,6 +107,10 @@ const RuleCase kCases[] = {
      [](auto& c) { c.evidence.min_confidence = -0.1; }},
     {"min_confidence_one", "evidence.min_confidence",
      [](auto& c) { c.evidence.min_confidence = 1.0; }},
+    {"preset_gate_offset", "preset_gate.max_offset_m",
+     [](auto& c) { c.preset_gate.max_offset_m = -0.1; }},
+    {"preset_gate_yaw", "preset_gate.max_yaw_offset_rad",
+     [](auto& c) { c.preset_gate.max_yaw_offset_rad = -0.1; }},
 };
 
 TEST(DetectorConfigTest, DefaultsPass) { EXPECT_FALSE(FindConfigViolation(DetectorConfig{})); }

@@ -230,6 +230,47 @@ TEST(DetectorTest, PresetPicksTheMiddleOfThreeShelvesSideBySide) {
   EXPECT_EQ(std::count(matched.begin(), matched.end(), 1), 1);
 }
 
+// The preset gate: in the same row of three, a preset on the middle shelf returns only it (its
+// neighbours stand a pitch, > 0.5 m, away and are counted off_preset); a preset 0.3 m off and
+// 0.1 rad turned (a map that is that wrong) still returns the shelf; one turned 0.6 rad against
+// the shelf, or 0.7 m away from every shelf, returns none; with the gate off (0) the neighbours
+// come back. The ROI is widened (roi_gamma 2) so that the neighbours are searched at all.
+TEST(DetectorTest, PresetGateReturnsOnlyTheShelfTheMapExpects) {
+  const auto models = PaperModels();
+  const auto& model = models[3];
+  const double pitch = model.width_m + model.leg.width_m + 0.3;
+  sim::World world;
+  testing::AddRoom(world);
+  std::vector<geometry::Pose2> truth;
+  for (int i = -1; i <= 1; ++i) {
+    truth.emplace_back(2.2, i * pitch, 0.0);
+    world.AddShelf(i + 2, model, truth.back());
+  }
+  const geometry::LaserScan scan = SimScan(world, {}, 11);
+  DetectorConfig wide;
+  wide.preprocess.roi_gamma = 2.0;
+  const Detector detector(models, wide);
+  const DetectionResult r = detector.Detect(scan, truth[1]);
+  ASSERT_EQ(r.detections.size(), 1u);
+  EXPECT_LT(geometry::Distance(r.detections[0].T_lidar_shelf, truth[1]), kCentreTol);
+  EXPECT_GE(r.stats.rejected.off_preset, 1);
+
+  const DetectionResult off = detector.Detect(scan, truth[1] * geometry::Pose2(0.3, 0.0, 0.1));
+  ASSERT_EQ(off.detections.size(), 1u);
+  EXPECT_LT(geometry::Distance(off.detections[0].T_lidar_shelf, truth[1]), kCentreTol);
+
+  EXPECT_TRUE(detector.Detect(scan, truth[1] * geometry::Pose2(0.0, 0.0, 0.6)).detections.empty());
+  EXPECT_TRUE(detector.Detect(scan, geometry::Pose2(1.5, 0.5 * pitch, 0.0)).detections.empty());
+
+  DetectorConfig open = wide;
+  open.preset_gate.max_offset_m = 0.0;
+  open.preset_gate.max_yaw_offset_rad = 0.0;
+  const DetectionResult all = Detector(models, open).Detect(scan, truth[1]);
+  ASSERT_GE(all.detections.size(), 2u);
+  EXPECT_LT(geometry::Distance(all.detections[0].T_lidar_shelf, truth[1]), kCentreTol);
+  EXPECT_EQ(all.stats.rejected.off_preset, 0);
+}
+
 TEST(DetectorTest, PresetHeadingResolvesTheAmbiguity) {
   const auto models = PaperModels();
   const Detector detector(models);

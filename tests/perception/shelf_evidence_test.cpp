@@ -162,5 +162,39 @@ TEST(ShelfEvidenceTest, LegsOfAnotherSectionLowerTheConfidence) {
   }
 }
 
+// A person (two 10 cm legs, 0.2 m apart) standing inside the footprint near a front leg of a
+// shelf seen with all four legs, 1.8 m ahead, at spots 0.1-0.25 m in from the leg. A person's
+// leg is not a shelf leg: it must never count as a foreign leg inside (the signature of a phantom
+// made of two shelves' legs), only as an object, and the shelf is returned where it stands.
+TEST(ShelfEvidenceTest, PersonInsideTheFootprintIsNotAForeignLeg) {
+  const auto models = PaperModels();
+  const auto& model = models[1];
+  const geometry::Pose2 T_shelf(1.8 + 0.5 * model.length_m, 0.1, 0.15);
+  Eigen::Vector2d front(-0.5 * model.length_m, 0.5 * model.width_m);  // near left leg
+  int seeds = 0;
+  for (double dx : {0.1, 0.15, 0.2, 0.25}) {
+    for (double dy : {-0.2, -0.25}) {
+      sim::World world;
+      testing::AddRoom(world);
+      world.AddShelf(1, model, T_shelf);
+      // A person standing still: two round legs.
+      world.AddRoundPost(T_shelf * Eigen::Vector2d(front.x() + dx, front.y() + dy), 0.05);
+      world.AddRoundPost(T_shelf * Eigen::Vector2d(front.x() + dx + 0.2, front.y() + dy), 0.05);
+      const DetectionResult r =
+          Detector(models).Detect(SimScan(world, {}, 7 + seeds++), T_shelf, true);
+      ASSERT_FALSE(r.detections.empty()) << dx << ", " << dy;
+      const Detection& d = r.detections.front();
+      EXPECT_EQ(d.model, model.name);
+      EXPECT_LT(geometry::Distance(d.T_lidar_shelf, T_shelf), kCentreTol) << dx << ", " << dy;
+      EXPECT_GT(d.interior_points, 0);
+      for (const auto& h : r.hypotheses) {
+        if (h.verdict == Verdict::kReturned) {
+          EXPECT_EQ(h.foreign_legs_inside, 0) << dx << ", " << dy;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace shelfdock::perception
