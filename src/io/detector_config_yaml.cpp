@@ -33,6 +33,7 @@ void ReadModelMatch(YamlFields f, perception::ModelMatchConfig& c) {
   f.Read("gamma_sum_m", c.gamma_sum_m);
   f.Read("lambda_m", c.lambda_m);
   f.Read("three_leg_err_sum_m", c.three_leg_err_sum_m);
+  f.Read("three_leg_err_sum_preset_m", c.three_leg_err_sum_preset_m);
   f.RejectUnknown();
 }
 

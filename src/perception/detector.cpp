@@ -115,7 +115,9 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     return h;
   }
   // Two edges constrain a shelf less than four: a 3-leg set must match more tightly.
-  if (set.count == 3 && refined.err_sum > config.model_match.three_leg_err_sum_m) {
+  const double three_leg_bound = in.T_lidar_preset ? config.model_match.three_leg_err_sum_preset_m
+                                                   : config.model_match.three_leg_err_sum_m;
+  if (set.count == 3 && refined.err_sum > three_leg_bound) {
     rec.verdict = Verdict::kThreeLegError;
     return h;
   }

@@ -31,6 +31,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(m.gamma_sum_m > 0.0, "model_match.gamma_sum_m", "> 0");
   k.Check(m.lambda_m >= 0.0, "model_match.lambda_m", ">= 0");
   k.Check(m.three_leg_err_sum_m > 0.0, "model_match.three_leg_err_sum_m", "> 0");
+  k.Check(m.three_leg_err_sum_preset_m > 0.0, "model_match.three_leg_err_sum_preset_m", "> 0");
 
   const auto& l = c.leg_fit;
   k.Check(l.loss_scale_m > 0.0, "leg_fit.loss_scale_m", "> 0");

@@ -52,6 +52,8 @@ const RuleCase kCases[] = {
     {"lambda", "model_match.lambda_m", [](auto& c) { c.model_match.lambda_m = -0.01; }},
     {"three_leg_err_sum", "model_match.three_leg_err_sum_m",
      [](auto& c) { c.model_match.three_leg_err_sum_m = 0.0; }},
+    {"three_leg_err_sum_preset", "model_match.three_leg_err_sum_preset_m",
+     [](auto& c) { c.model_match.three_leg_err_sum_preset_m = 0.0; }},
     {"leg_fit_loss", "leg_fit.loss_scale_m", [](auto& c) { c.leg_fit.loss_scale_m = 0.0; }},
     {"leg_fit_prior", "leg_fit.prior_weight", [](auto& c) { c.leg_fit.prior_weight = -0.1; }},
     {"leg_fit_range_sigma", "leg_fit.range_sigma_m",

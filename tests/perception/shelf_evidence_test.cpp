@@ -64,6 +64,56 @@ TEST(ShelfEvidenceTest, FourthCornerBehindABoxIsExcused) {
   EXPECT_LT(geometry::Distance(r.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
 }
 
+// A 3-leg set whose fitted legs miss the model by 4-5 cm (err_sum; one post moved outward, as
+// far legs under 20 mm range noise can come out): with a preset it is within
+// three_leg_err_sum_preset_m and goes on to the evidence (returned, or rejected for a reason of
+// its own), without one it is beyond the stricter three_leg_err_sum_m: three_leg_error.
+TEST(ShelfEvidenceTest, ThreeLegBoundIsWiderWithAPreset) {
+  const auto models = PaperModels();
+  const geometry::ShelfModel& model = models[3];
+  const DetectorConfig config;
+  const Detector detector(models, config);
+  const geometry::Pose2 T_shelf(2.2, 0.1, 0.3);
+  const auto corners = model.LegCentres();
+  // The verdict of the scene's 3-leg hypothesis of `model` and its err_sum.
+  auto three_leg = [&](const DetectionResult& r) {
+    std::pair<Verdict, double> out{Verdict::kFit, 0.0};
+    for (const auto& h : r.hypotheses) {
+      if (h.model == model.name && h.legs.size() == 3) out = {h.verdict, h.err_sum};
+    }
+    return out;
+  };
+  int between = 0;
+  for (double shift = 0.0; shift <= 0.06; shift += 0.0025) {
+    sim::World world;
+    testing::AddRoom(world);
+    for (int k = 0; k < 4; ++k) {
+      if (k == kEmptyCorner) continue;
+      Eigen::Vector2d c = corners[k];
+      if (k == 3) c.y() -= shift;  // moved outward along the short side
+      const Eigen::Vector2d w = T_shelf * c;
+      world.AddSquarePost(geometry::Pose2(w.x(), w.y(), T_shelf.yaw), 0.04);
+    }
+    const Eigen::Vector2d hidden = T_shelf * corners[kEmptyCorner];
+    const Eigen::Vector2d box = hidden - 0.3 * hidden.normalized();
+    world.AddBox({geometry::Pose2(box.x(), box.y(), 0.0), 0.2, 0.2});
+    const geometry::LaserScan scan = SimScan(world, {}, 3);
+    const auto [verdict_with, err] = three_leg(detector.Detect(scan, T_shelf, true));
+    if (err <= config.model_match.three_leg_err_sum_m + 0.002 ||
+        err >= config.model_match.three_leg_err_sum_preset_m - 0.002) {
+      continue;
+    }
+    ++between;
+    EXPECT_NE(verdict_with, Verdict::kThreeLegError) << "shift " << shift << " err " << err;
+    const DetectionResult without = detector.Detect(scan, std::nullopt, true);
+    EXPECT_EQ(three_leg(without).first, Verdict::kThreeLegError) << "shift " << shift;
+    for (const auto& d : without.detections) {
+      EXPECT_GT(geometry::Distance(d.T_lidar_shelf, T_shelf), 0.1) << "shift " << shift;
+    }
+  }
+  EXPECT_GE(between, 1) << "no shift put err_sum between the two bounds";
+}
+
 TEST(ShelfEvidenceTest, PostInsideTheFootprintLowersConfidence) {
   const auto models = PaperModels();
   const geometry::ShelfModel& model = models[3];
