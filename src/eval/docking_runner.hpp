@@ -96,7 +96,11 @@ struct DockingRun {
   docking::Outcome outcome;
   docking::Method method = docking::Method::kContinuous;
   std::uint64_t seed = 0;
-  double time_s = 0.0;  ///< [s] docking area entry to end of lift (or to the stop on failure)
+  /// [s] docking area entry to end of lift (or to the stop on failure). The clock starts when
+  /// the robot truly crosses the entry (entry distance behind the true goal, within the area's
+  /// width), not when the Docker believes it did: its localisation bias (up to ~3 cm along the
+  /// axis) would otherwise move the start by up to ~0.1 s either way at the docking speed.
+  double time_s = 0.0;
   /// LiDAR-guided final error (the "before the code check"): where the LiDAR-guided
   /// goal truly lay when the camera first corrected it on the way in, else the pose at the stop.
   PoseError error_before_check;
