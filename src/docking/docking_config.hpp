@@ -132,8 +132,8 @@ struct DockingConfig {
   double area_max_heading_rad = 0.8;  ///< [rad] inside it the robot may dock from this heading
   double turn_penalty_m = 0.75;       ///< [m] of straight a turn on the spot is worth giving up
   double max_move_out_m = 1.0;        ///< [m] longest straight move to get free room to turn
-  int max_block_replans = 3;      ///< approach re-plans for obstacles a scan shows; then waiting
-  int max_approach_plans = 8;     ///< approach plans (the first and after each move out)
+  int max_block_replans = 3;   ///< approach re-plans for obstacles a scan shows; then waiting
+  int max_approach_plans = 8;  ///< approach plans (the first and after each move out)
   /// Goal change that triggers a re-plan. Below it the robot keeps driving to the older goal,
   /// so it is also an error the LiDAR leaves for the code check: 2 mm / 2 mrad (4 mm / 4 mrad
   /// left 9.7 mrad p99 of heading error at the check and 0.39 adjustments per docking on the

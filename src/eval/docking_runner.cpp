@@ -263,7 +263,7 @@ DockingRun RunDocking(const sim::Scenario& scenario,
   run.outcome = docker.done() ? docker.outcome()
                               : docking::Outcome{docking::OutcomeCode::kTimeout,
                                                  "the simulation ran out of time"};
-  const double start = std::isfinite(true_entry_t)                    ? true_entry_t
+  const double start = std::isfinite(true_entry_t)                  ? true_entry_t
                        : std::isfinite(docker.docking_start_time()) ? docker.docking_start_time()
                                                                     : 0.0;
   run.time_s = robot.time_s() - start;
