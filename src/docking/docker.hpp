@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -124,6 +125,7 @@ class Docker {
   /// kDock: recognition while moving, re-planning, obstacle stops.
   struct DockState {
     bool lidar_in_use = true;
+    bool two_leg_tracking = false;  ///< only two legs trusted: re-measured, not detected
     bool goal_is_parking = false;
     std::optional<geometry::Pose2> last_detection;
     std::optional<geometry::Pose2> first_goal;  ///< the goal of the first plan (odom)
@@ -173,7 +175,14 @@ class Docker {
   PlanStatus Replan(const geometry::Pose2& T_odom_base, const geometry::Pose2& goal, Command* cmd,
                     const PlannerConfig* planner = nullptr);
   bool ReplanJustified() const;
-  bool LidarStillUseful(const geometry::Pose2& T_odom_base) const;
+  /// Which of the shelf's legs the LiDAR can still be trusted on from here (range and bearing),
+  /// on the fused estimate.
+  std::array<bool, 4> TrustedLegs(const geometry::Pose2& T_odom_base) const;
+  /// Fuses one measurement of the shelf (odom frame; covariance in the lidar frame) and re-plans
+  /// when the goal moved (paper 3.5). `what` names it in the event.
+  void FuseShelf(const Observations& obs, const geometry::Pose2& T_odom_shelf,
+                 const geometry::Pose2& T_odom_lidar, const Eigen::Matrix3d& covariance_lidar,
+                 const std::string& what, Command* cmd);
   geometry::Pose2 GoalFromShelf(const geometry::Pose2& T_odom_shelf) const;
   void Fail(OutcomeCode code, std::string reason, Command* cmd);
   VelocityCommand BrakeCommand(double dt) const;

@@ -2,11 +2,13 @@
 // re-planning when the goal moves, and the hand-over to odometry when the legs get too close.
 #include "docking/docker.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "docking/collision_check.hpp"
 #include "docking/path_planner.hpp"
+#include "perception/known_legs.hpp"
 
 #include "docking/docker_detail.hpp"
 
@@ -48,17 +50,17 @@ bool Docker::ReplanJustified() const {
   return dock_.replans < config_.max_replans + static_cast<int>(explained);
 }
 
-bool Docker::LidarStillUseful(const Pose2& T_odom_base) const {
+std::array<bool, 4> Docker::TrustedLegs(const Pose2& T_odom_base) const {
   const Pose2 T_lidar_shelf = (T_odom_base * config_.T_base_lidar).inverse() * tracker_.estimate();
-  int visible = 0;
-  for (const Eigen::Vector2d& c : task_.model.LegCentres()) {
-    const Eigen::Vector2d p = T_lidar_shelf * c;
+  std::array<bool, 4> trusted{};
+  const auto corners = task_.model.LegCentres();
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const Eigen::Vector2d p = T_lidar_shelf * corners[k];
     const double bearing = std::atan2(p.y(), p.x());
-    if (p.norm() >= config_.leg_min_range_m && std::abs(bearing) <= config_.leg_max_bearing_rad) {
-      ++visible;
-    }
+    trusted[k] =
+        p.norm() >= config_.leg_min_range_m && std::abs(bearing) <= config_.leg_max_bearing_rad;
   }
-  return visible >= 3;
+  return trusted;
 }
 
 void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) {
@@ -89,6 +91,16 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
   if (!recognise || points.empty()) return;
 
   const Pose2 T_lidar_preset = T_odom_lidar.inverse() * tracker_.estimate();
+  if (dock_.two_leg_tracking) {
+    // Two legs left in view: re-measure the tracked shelf from them (the detector would need
+    // three to find it).
+    const auto measured = perception::MeasureKnownLegs(points, T_lidar_preset, task_.model,
+                                                       TrustedLegs(obs.T_odom_base));
+    if (!measured) return;
+    FuseShelf(obs, T_odom_lidar * measured->T_lidar_shelf, T_odom_lidar, measured->covariance,
+              "two legs", cmd);
+    return;
+  }
   const perception::DetectionResult result =
       detect_(points, scan.angle_increment, std::optional<Pose2>(T_lidar_preset));
   if (result.detections.empty()) return;
@@ -117,17 +129,23 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
     return;
   }
   const perception::Detection& det = *chosen;
-  const Pose2 T_odom_shelf = T_odom_lidar * det.T_lidar_shelf;
+  FuseShelf(obs, T_odom_lidar * det.T_lidar_shelf, T_odom_lidar, det.covariance,
+            det.model + " legs " + std::to_string(det.legs_used), cmd);
+}
+
+void Docker::FuseShelf(const Observations& obs, const Pose2& T_odom_shelf,
+                       const Pose2& T_odom_lidar, const Eigen::Matrix3d& covariance_lidar,
+                       const std::string& what, Command* cmd) {
   Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
   J.topLeftCorner<2, 2>() = T_odom_lidar.rotation();
-  const TrackUpdate update = tracker_.Add(T_odom_shelf, J * det.covariance * J.transpose());
+  const TrackUpdate update = tracker_.Add(T_odom_shelf, J * covariance_lidar * J.transpose());
   if (update == TrackUpdate::kRejected) {
     cmd->events.push_back("detection_rejected: jump from the fused estimate");
     return;
   }
   dock_.last_detection = T_odom_shelf;
   dock_.last_detection_t = obs.t_s;
-  cmd->events.push_back("detection: " + det.model + " legs " + std::to_string(det.legs_used) +
+  cmd->events.push_back("detection: " + what +
                         (update == TrackUpdate::kReinitialised ? " (track restarted)" : ""));
   if (dock_.goal_is_parking) return;
 
@@ -227,11 +245,19 @@ void Docker::StepDock(const Observations& obs, Command* cmd) {
          "the robot left the planned path by " + Fmt(status.cross_track_m) + " m", cmd);
     return;
   }
-  if (dock_.lidar_in_use && tracker_.has_detection() &&
-      (status.remaining_m < config_.lidar_cutoff_m || !LidarStillUseful(obs.T_odom_base))) {
-    dock_.lidar_in_use = false;
-    cmd->events.push_back("lidar_off: legs too close to recognise, " + Fmt(status.remaining_m, 2) +
-                          " m to go on odometry");
+  if (dock_.lidar_in_use && tracker_.has_detection()) {
+    const std::array<bool, 4> trusted = TrustedLegs(obs.T_odom_base);
+    const int legs = static_cast<int>(std::count(trusted.begin(), trusted.end(), true));
+    if (status.remaining_m < config_.lidar_cutoff_m || legs < 2 ||
+        (legs < 3 && !config_.two_leg_tracking)) {
+      dock_.lidar_in_use = false;
+      cmd->events.push_back("lidar_off: legs too close to recognise, " +
+                            Fmt(status.remaining_m, 2) + " m to go on odometry");
+    } else if (legs < 3 && !dock_.two_leg_tracking) {
+      dock_.two_leg_tracking = true;
+      cmd->events.push_back("two_leg_tracking: two legs left in view, " +
+                            Fmt(status.remaining_m, 2) + " m to go");
+    }
   }
   if (status.reached) {
     cmd->velocity = {};

@@ -145,7 +145,12 @@ struct DockingConfig {
   /// a goal change of replan_xy_m / replan_yaw_rad, so the net change of the goal since the
   /// first plan, in those units, bounds the useful ones; more means the goal oscillates.
   int max_replans = 40;
-  double lidar_cutoff_m = 0.45;      ///< [m] remaining path below which the LiDAR is not used
+  double lidar_cutoff_m = 0.25;  ///< [m] remaining path below which the LiDAR is not used; the
+                                 ///< camera (on from camera_guide.camera_on_m) guides after it
+  /// When only two legs are left in the LiDAR's trusted field (the front legs pass beside the
+  /// robot on the final straight), keep measuring the shelf from those two
+  /// (perception::MeasureKnownLegs) instead of driving the rest on odometry alone.
+  bool two_leg_tracking = true;
   double leg_min_range_m = 0.15;     ///< [m] legs nearer the LiDAR than this are not trusted
   double leg_max_bearing_rad = 2.2;  ///< [rad] legs beyond this bearing are not trusted
   double must_detect_by_m = 1.2;     ///< [m] remaining path by which the shelf must be found

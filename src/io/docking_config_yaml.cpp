@@ -122,6 +122,7 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
   top.Read("max_block_replans", c.max_block_replans);
   top.Read("abort_decel_factor", c.abort_decel_factor);
   top.Read("lidar_cutoff_m", c.lidar_cutoff_m);
+  top.Read("two_leg_tracking", c.two_leg_tracking);
   top.Read("leg_min_range_m", c.leg_min_range_m);
   top.Read("leg_max_bearing_rad", c.leg_max_bearing_rad);
   top.Read("must_detect_by_m", c.must_detect_by_m);

@@ -59,6 +59,12 @@ TEST_F(DockingConfigYamlTest, ReadsTheCameraCorrectionKeys) {
   EXPECT_DOUBLE_EQ(c.replan_xy_m, 0.01);  // the LiDAR's re-plan threshold, a different field
 }
 
+TEST_F(DockingConfigYamlTest, ReadsTheTwoLegTrackingSwitch) {
+  EXPECT_TRUE(ReadDockingConfig(Write("entry_distance_m: 4.0\n")).two_leg_tracking);
+  EXPECT_FALSE(ReadDockingConfig(Write("two_leg_tracking: false\n")).two_leg_tracking);
+  ExpectKeyError("two_leg_tracking: 0.5\n", "two_leg_tracking", "");
+}
+
 TEST_F(DockingConfigYamlTest, OldCameraKeysNameTheirNewNames) {
   ExpectKeyError("camera_guide: {replan_xy_m: 0.001}\n", "camera_guide.replan_xy_m",
                  "camera_guide.correct_xy_m");
