@@ -226,9 +226,15 @@ void Docker::StepDock(const Observations& obs, Command* cmd) {
     cmd->velocity = BrakeCommand(dt);
     return;
   }
-  if (obs.camera_frame && !dock_.goal_is_parking && !dock_.lidar_in_use &&
-      config_.camera_guide.enabled) {
-    GuideByCode(obs, cmd);
+  if (obs.camera_frame && !dock_.goal_is_parking && config_.camera_guide.enabled) {
+    // The code under the shelf is the better guide from the moment the camera reads it: the
+    // LiDAR hands over then (or at lidar_cutoff_m, whichever comes first), so the camera has as
+    // much of the straight as it can get to correct the goal.
+    if (dock_.lidar_in_use && obs.marker && obs.marker->id == task_.shelf_id) {
+      dock_.lidar_in_use = false;
+      cmd->events.push_back("lidar_off: the camera reads the code");
+    }
+    if (!dock_.lidar_in_use) GuideByCode(obs, cmd);
     if (phase_ != Phase::kDock) return;
   }
   const TrackingStatus status = follower_.Update(obs.T_odom_base, dt);

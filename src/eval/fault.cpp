@@ -136,6 +136,8 @@ FaultSpec DrawFault(std::uint64_t seed, const FaultDrawConfig& c) {
 
 bool DockingPossible(const FaultSpec& fault) { return ExpectedFailures(fault.kind).empty(); }
 
+bool SuccessAcceptable(FaultKind kind) { return kind == FaultKind::kPersonStanding; }
+
 std::span<const docking::OutcomeCode> ExpectedFailures(FaultKind kind) {
   switch (kind) {
     case FaultKind::kShelfDisplaced:

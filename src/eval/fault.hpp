@@ -81,4 +81,9 @@ bool DockingPossible(const FaultSpec& fault);
 /// The typed failures that are a correct end of an impossible run (empty for possible ones).
 std::span<const docking::OutcomeCode> ExpectedFailures(FaultKind kind);
 
+/// Whether success is also a correct end of an impossible run: a person standing in the path
+/// blocks the docking area the map suggests, but the Docker may find the shelf's other end free
+/// and dock from there (the true leg clearance is checked on every run all the same).
+bool SuccessAcceptable(FaultKind kind);
+
 }  // namespace shelfdock::eval

@@ -23,6 +23,8 @@ FaultRun RunFaulted(const sim::Scenario& scenario, const std::vector<geometry::S
       !out.run.hung && code != docking::OutcomeCode::kPending && !out.run.outcome.reason.empty();
   if (out.possible) {
     out.rule_violation = !out.run.outcome.ok();
+  } else if (out.run.outcome.ok()) {
+    out.rule_violation = !SuccessAcceptable(out.fault.kind);
   } else {
     const auto expected = ExpectedFailures(out.fault.kind);
     out.rule_violation = std::find(expected.begin(), expected.end(), code) == expected.end();

@@ -7,6 +7,39 @@
 #include "perception/leg_fit.hpp"
 
 namespace shelfdock::perception {
+namespace {
+
+// The points of the leg expected at `predicted`: the run of consecutive points (beam order,
+// neighbours closer than gap_m) holding the point nearest to it, cut to search_radius_m. A box or
+// a post near the leg is another run and stays out; a run wider than the leg (something touching
+// it, merged) is no leg measurement at all: empty.
+std::vector<ScanPoint> LegRun(const std::vector<ScanPoint>& points,
+                              const Eigen::Vector2d& predicted, const geometry::LegModel& leg,
+                              const KnownLegsConfig& config) {
+  std::size_t nearest = points.size();
+  double best = config.search_radius_m;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double d = (points[i].p - predicted).norm();
+    if (d <= best) {
+      best = d;
+      nearest = i;
+    }
+  }
+  if (nearest == points.size()) return {};
+  std::size_t first = nearest, last = nearest;
+  while (first > 0 && (points[first - 1].p - points[first].p).norm() < config.gap_m) --first;
+  while (last + 1 < points.size() && (points[last + 1].p - points[last].p).norm() < config.gap_m) {
+    ++last;
+  }
+  if ((points[last].p - points[first].p).norm() > leg.Extent() + config.size_margin_m) return {};
+  std::vector<ScanPoint> run;
+  for (std::size_t i = first; i <= last; ++i) {
+    if ((points[i].p - predicted).norm() <= config.search_radius_m) run.push_back(points[i]);
+  }
+  return run;
+}
+
+}  // namespace
 
 std::optional<KnownLegsResult> MeasureKnownLegs(const std::vector<ScanPoint>& points,
                                                 const geometry::Pose2& T_lidar_shelf_prior,
@@ -18,13 +51,12 @@ std::optional<KnownLegsResult> MeasureKnownLegs(const std::vector<ScanPoint>& po
   for (int k = 0; k < 4; ++k) {
     if (!use[static_cast<std::size_t>(k)]) continue;
     const Eigen::Vector2d predicted = T_lidar_shelf_prior * corners[static_cast<std::size_t>(k)];
-    std::vector<ScanPoint> leg_points;
-    for (const ScanPoint& q : points) {
-      if ((q.p - predicted).norm() <= config.search_radius_m) leg_points.push_back(q);
-    }
+    const std::vector<ScanPoint> leg_points = LegRun(points, predicted, model.leg, config);
     if (static_cast<int>(leg_points.size()) < config.min_points) continue;
     const LegFitResult fit = FitLeg(leg_points, model.leg, T_lidar_shelf_prior.yaw, config.leg_fit);
     if (!fit.converged) continue;
+    // The prior is good to a few millimetres here: a leg found farther off is something else.
+    if ((fit.centre - predicted).norm() > config.max_offset_m) return std::nullopt;
     in_shelf.push_back(corners[static_cast<std::size_t>(k)]);
     in_lidar.push_back(fit.centre);
   }

@@ -16,7 +16,11 @@ namespace shelfdock::perception {
 /// Re-measuring a shelf whose pose is already known to a few millimetres from the legs the scan
 /// shows where they are expected (MeasureKnownLegs).
 struct KnownLegsConfig {
-  double search_radius_m = 0.06;  ///< [m] points this near a predicted leg centre are its points
+  double search_radius_m = 0.06;  ///< [m] points this near a predicted leg centre may be its points
+  double gap_m = 0.05;            ///< [m] a leg's points: consecutive beams closer than this
+  double size_margin_m = 0.02;    ///< [m] a run of points wider than the leg's extent plus this is
+                                  ///< the leg merged with something touching it: not measured
+  double max_offset_m = 0.03;     ///< [m] a fitted leg farther from its predicted centre: no result
   int min_points = 2;             ///< [-] fewer points: that leg is not measured
   double leg_sigma_m = 0.004;     ///< [m] std of one fitted leg centre (for the covariance)
   double max_rms_m = 0.012;       ///< [m] legs farther (RMS) from the fitted model: no result
