@@ -183,8 +183,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     // Leg-sized also across the view: a person's leg (10-14 cm) seen side-on can be short in
     // extent when only a few beams hit it, but its seen width gives it away. A foreign shelf
     // leg is no wider than the widest silhouette of this model's leg plus the beam blur.
-    const double span_angle = std::abs(
-        geometry::AngleDiff(pre.points[span.end - 1].angle, pre.points[span.begin].angle));
+    const double span_angle =
+        std::abs(geometry::AngleDiff(pre.points[span.end - 1].angle, pre.points[span.begin].angle));
     const double seen_width = span.centroid.norm() * (span_angle + alpha);
     if (seen_width > leg_extent + span.centroid.norm() * alpha + config.leg_width_slack_m) continue;
     if (s >= shelf_like_spans.size() || !shelf_like_spans[s]) continue;
