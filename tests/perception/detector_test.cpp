@@ -192,19 +192,25 @@ TEST(DetectorTest, ThreeLegsAroundTheSensorAreAShelf) {
   }
 }
 
+// Three shelves of `model` side by side 2.2 m ahead, 0.3 m between neighbouring legs, in a
+// room; `truth` gets their poses (left to right seen from the sensor: -y, 0, +y).
+sim::World RowOfThree(const geometry::ShelfModel& model, std::vector<geometry::Pose2>* truth) {
+  const double pitch = model.width_m + model.leg.width_m + 0.3;
+  sim::World world;
+  testing::AddRoom(world);
+  for (int i = -1; i <= 1; ++i) {
+    truth->emplace_back(2.2, i * pitch, 0.0);
+    world.AddShelf(i + 2, model, truth->back());
+  }
+  return world;
+}
+
 TEST(DetectorTest, PresetPicksTheMiddleOfThreeShelvesSideBySide) {
   const auto models = PaperModels();
   const Detector detector(models);
   const auto& model = models[3];
-  const double pitch = model.width_m + model.leg.width_m + 0.3;  // 0.3 m gap between legs
-  sim::World world;
-  testing::AddRoom(world);
   std::vector<geometry::Pose2> truth;
-  for (int i = -1; i <= 1; ++i) {
-    truth.emplace_back(2.2, i * pitch, 0.0);
-    world.AddShelf(i + 2, model, truth.back());
-  }
-  const geometry::LaserScan scan = SimScan(world, {}, 11);
+  const geometry::LaserScan scan = SimScan(RowOfThree(model, &truth), {}, 11);
   const geometry::Pose2 preset = truth[1] * geometry::Pose2(-0.15, 0.12, -0.08);
   const DetectionResult r = detector.Detect(scan, preset);
   ASSERT_FALSE(r.detections.empty());
@@ -239,14 +245,8 @@ TEST(DetectorTest, PresetGateReturnsOnlyTheShelfTheMapExpects) {
   const auto models = PaperModels();
   const auto& model = models[3];
   const double pitch = model.width_m + model.leg.width_m + 0.3;
-  sim::World world;
-  testing::AddRoom(world);
   std::vector<geometry::Pose2> truth;
-  for (int i = -1; i <= 1; ++i) {
-    truth.emplace_back(2.2, i * pitch, 0.0);
-    world.AddShelf(i + 2, model, truth.back());
-  }
-  const geometry::LaserScan scan = SimScan(world, {}, 11);
+  const geometry::LaserScan scan = SimScan(RowOfThree(model, &truth), {}, 11);
   DetectorConfig wide;
   wide.preprocess.roi_gamma = 2.0;
   const Detector detector(models, wide);
