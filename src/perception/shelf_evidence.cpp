@@ -65,9 +65,11 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
 }
 
 // Width of a cluster across the view: its angular span plus one beam, at its range.
-double SeenWidth(const Cluster& c, double alpha) {
-  const double span = std::abs(geometry::AngleDiff(c.points.back().angle, c.points.front().angle));
-  return c.centroid.norm() * (span + alpha);
+// `first` and `last` are its end points in beam order, `centroid` its mean.
+double SeenWidth(const ScanPoint& first, const ScanPoint& last, const Eigen::Vector2d& centroid,
+                 double alpha) {
+  const double span = std::abs(geometry::AngleDiff(last.angle, first.angle));
+  return centroid.norm() * (span + alpha);
 }
 
 // Objects under a shelf are excused in part when four legs vouch for it, or when a leg is
@@ -115,7 +117,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       // One beam either way at the edges, plus the blur of the beam's footprint.
       const double beam = c.centroid.norm() * alpha;  // one beam's spacing at the leg
       const double slack = beam + config.leg_width_slack_m;
-      const double seen = SeenWidth(c, alpha);
+      const double seen = SeenWidth(c.points.front(), c.points.back(), c.centroid, alpha);
       width_errors[k] = std::max(0.0, std::abs(seen - expected) - slack);
       width_bias_sum += seen - expected;
       beam_sum += beam;
@@ -183,9 +185,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     // Leg-sized also across the view: a person's leg (10-14 cm) seen side-on can be short in
     // extent when only a few beams hit it, but its seen width gives it away. A foreign shelf
     // leg is no wider than the widest silhouette of this model's leg plus the beam blur.
-    const double span_angle =
-        std::abs(geometry::AngleDiff(pre.points[span.end - 1].angle, pre.points[span.begin].angle));
-    const double seen_width = span.centroid.norm() * (span_angle + alpha);
+    const double seen_width =
+        SeenWidth(pre.points[span.begin], pre.points[span.end - 1], span.centroid, alpha);
     if (seen_width > leg_extent + span.centroid.norm() * alpha + config.leg_width_slack_m) continue;
     if (s >= shelf_like_spans.size() || !shelf_like_spans[s]) continue;
     ev.interior_leg_points += inside;
