@@ -1,9 +1,12 @@
 // `shelfdock dock`: one simulated docking, printed as one JSON object; `shelfdock eval-docking`:
 // N seeded dockings with both methods on the same seeds, printed as one JSON summary.
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +29,9 @@
 
 namespace shelfdock::app {
 namespace {
+
+// Runs listed per axis under "worst_before_check" in eval-docking's JSON.
+constexpr std::size_t kWorstRunsListed = 5;
 
 struct DockOptions {
   std::string scenario = DefaultConfig("scenarios/paper_docking.yaml");
@@ -183,10 +189,34 @@ int RunEvalDocking(const DockOptions& opt) {
       }
     }
     const eval::MethodSummary s = eval::Summarise(runs);
+    // The runs behind the tail of the before-check figures, by seed, so each can be replayed
+    // with `dock --seed` (its events say what the robot saw).
+    nlohmann::json worst = nlohmann::json::object();
+    for (const char* axis : {"xy", "yaw"}) {
+      std::vector<const eval::DockingRun*> valid;
+      for (const auto& r : runs) {
+        if (r.error_before_check.valid) valid.push_back(&r);
+      }
+      const bool yaw = std::string(axis) == "yaw";
+      auto size = [yaw](const eval::DockingRun* r) {
+        const eval::PoseError& e = r->error_before_check;
+        return yaw ? std::abs(e.yaw) : std::hypot(e.x, e.y);
+      };
+      std::sort(
+          valid.begin(), valid.end(),
+          [&](const eval::DockingRun* a, const eval::DockingRun* b) { return size(a) > size(b); });
+      nlohmann::json list = nlohmann::json::array();
+      for (std::size_t k = 0; k < std::min<std::size_t>(kWorstRunsListed, valid.size()); ++k) {
+        const eval::PoseError& e = valid[k]->error_before_check;
+        list.push_back({{"seed", valid[k]->seed}, {"x_m", e.x}, {"y_m", e.y}, {"yaw_rad", e.yaw}});
+      }
+      worst[axis] = list;
+    }
     mean_time[method == docking::Method::kContinuous ? 0 : 1] = s.mean_time_s;
     nlohmann::json summary = SummaryJson(s);
     summary["failures"] = failures;
     summary["leg_contacts"] = touched;
+    summary["worst_before_check"] = worst;
     out[std::string(docking::ToString(method))] = summary;
   }
   if (mean_time[0] > 0.0 && mean_time[1] > 0.0) {

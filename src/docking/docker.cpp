@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "docking/collision_check.hpp"
+#include "docking/path_bend.hpp"
 #include "docking/path_planner.hpp"
 #include "geometry/angle.hpp"
 
@@ -109,12 +110,32 @@ Docker::PlanStatus Docker::Replan(const Pose2& T_odom_base, const Pose2& goal, C
   return PlanStatus::kOk;
 }
 
+bool Docker::BendToGoal(const Pose2& T_odom_base, const Pose2& goal, double max_curvature_1pm,
+                        Command* cmd) {
+  if (!follower_.has_path()) return false;
+  const double s_from = follower_.path().Project(T_odom_base).s;
+  const std::optional<Path> bent = BendPathToGoal(follower_.path(), s_from, goal);
+  if (!bent) return false;
+  for (const PathPoint& p : bent->points) {
+    if (p.s > s_from && std::abs(p.curvature) > max_curvature_1pm) return false;
+  }
+  if (!CheckPathAgainstLegs(*bent, LegDiscs(task_.model, tracker_.estimate()), config_.safety).ok) {
+    return false;
+  }
+  follower_.SetPath(*bent, config_.controller.max_speed_mps, 0.0, last_v_cmd_);
+  T_odom_goal_ = goal;
+  ++path_version_;
+  cmd->events.push_back("plan_bent: goal " + Fmt(goal.x, 4) + "," + Fmt(goal.y, 4) + "," +
+                        Fmt(goal.yaw, 4) + ", " + Fmt(bent->Length() - s_from, 2) + " m ahead");
+  return true;
+}
+
 Command Docker::Step(const Observations& obs) {
   Command cmd;
   odometry_.Add(obs.t_s, obs.T_odom_base);
   if (!started_) Start(obs, &cmd);
   const double dt = std::max(obs.t_s - last_t_, 1e-4);
-  tracker_.AddOdometryDrift(geometry::Distance(obs.T_odom_base, last_T_odom_base_));
+  tracker_.AddOdometryMotion(last_T_odom_base_, obs.T_odom_base);
   if (phase_ != Phase::kDone && phase_ != Phase::kAbort && obs.t_s - t_start_ > config_.timeout_s) {
     Fail(OutcomeCode::kTimeout, "docking took longer than " + Fmt(config_.timeout_s, 0) + " s",
          &cmd);

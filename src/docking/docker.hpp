@@ -175,6 +175,10 @@ class Docker {
   PlanStatus Replan(const geometry::Pose2& T_odom_base, const geometry::Pose2& goal, Command* cmd,
                     const PlannerConfig* planner = nullptr);
   bool ReplanJustified() const;
+  // Moves the current path's end onto `goal` (BendPathToGoal) when the bent path stays within
+  // `max_curvature_1pm` ahead of the robot and clear of the legs; false leaves the path as it was.
+  bool BendToGoal(const geometry::Pose2& T_odom_base, const geometry::Pose2& goal,
+                  double max_curvature_1pm, Command* cmd);
   /// Which of the shelf's legs the LiDAR can still be trusted on from here (range and bearing),
   /// on the fused estimate.
   std::array<bool, 4> TrustedLegs(const geometry::Pose2& T_odom_base) const;

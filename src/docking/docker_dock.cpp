@@ -164,6 +164,9 @@ void Docker::FuseShelf(const Observations& obs, const Pose2& T_odom_shelf,
     return;
   }
   ++dock_.replans;
+  // The goal moved: bend the path the robot is on to it, or plan afresh when the bend would
+  // need more than the planner's curvature bound.
+  if (BendToGoal(obs.T_odom_base, goal, config_.planner.max_curvature_1pm, cmd)) return;
   const PlanStatus status = Replan(obs.T_odom_base, goal, cmd);
   if (status == PlanStatus::kCollides) {
     Fail(OutcomeCode::kWouldCollide, dock_.replan_failure, cmd);

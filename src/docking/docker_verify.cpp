@@ -58,7 +58,10 @@ void Docker::GuideByCode(const Observations& obs, Command* cmd) {
   planner.final_straight_m = std::min(planner.final_straight_m, 0.5 * remaining_m);
   planner.max_curvature_1pm = g.max_curvature_1pm;
   const Pose2 lidar_goal = T_odom_goal_;
-  if (Replan(obs.T_odom_base, goal, cmd, &planner) != PlanStatus::kOk) return;
+  if (!BendToGoal(obs.T_odom_base, goal, g.max_curvature_1pm, cmd) &&
+      Replan(obs.T_odom_base, goal, cmd, &planner) != PlanStatus::kOk) {
+    return;
+  }
   if (!guide_.lidar_goal_before_camera) guide_.lidar_goal_before_camera = lidar_goal;
   ++guide_.corrections;
   cmd->events.push_back("camera_guide: goal moved " + Fmt(diff.x, 4) + "," + Fmt(diff.y, 4) + "," +

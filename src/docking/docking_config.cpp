@@ -52,6 +52,7 @@ std::optional<ConfigViolation> FindConfigViolation(const ShelfTrackerConfig& c) 
   k.Check(Positive(c.min_sigma_yaw_rad), "min_sigma_yaw_rad", "> 0");
   k.Check(NonNegative(c.drift_sigma_xy_per_m), "drift_sigma_xy_per_m", ">= 0");
   k.Check(NonNegative(c.drift_sigma_yaw_per_m), "drift_sigma_yaw_per_m", ">= 0");
+  k.Check(NonNegative(c.drift_rate_sigma_yaw_per_m), "drift_rate_sigma_yaw_per_m", ">= 0");
   k.Check(Positive(c.preset_sigma_xy_m), "preset_sigma_xy_m", "> 0");
   k.Check(Positive(c.preset_sigma_yaw_rad), "preset_sigma_yaw_rad", "> 0");
   k.Check(Positive(c.preset_gate_sigmas), "preset_gate_sigmas", "> 0");

@@ -45,8 +45,10 @@ struct ShelfTrackerConfig {
   double min_sigma_yaw_rad = 0.003;     ///< [rad]
   double drift_sigma_xy_per_m = 0.004;  ///< [m/sqrt(m)] growth of odometry error per metre
   double drift_sigma_yaw_per_m = 0.003;  ///< [rad/sqrt(m)]
-  double preset_sigma_xy_m = 0.3;        ///< [m] prior std dev of the preset pose
-  double preset_sigma_yaw_rad = 0.2;     ///< [rad]
+  // Unequal wheel radius errors (0.1 % each on a 0.5 m track) turn odometry 2.8 mrad per metre.
+  double drift_rate_sigma_yaw_per_m = 0.003;  ///< [rad/m] prior std of that drift rate; 0: none
+  double preset_sigma_xy_m = 0.3;             ///< [m] prior std dev of the preset pose
+  double preset_sigma_yaw_rad = 0.2;          ///< [rad]
   /// Detections farther from the preset than this many preset_sigma_xy_m are another shelf
   /// (a neighbour in an aisle), never this one, and are not fused.
   double preset_gate_sigmas = 3.0;
@@ -148,14 +150,17 @@ struct DockingConfig {
   /// a goal change of replan_xy_m / replan_yaw_rad, so the net change of the goal since the
   /// first plan, in those units, bounds the useful ones; more means the goal oscillates.
   int max_replans = 40;
-  double lidar_cutoff_m = 0.45;  ///< [m] remaining path below which the LiDAR is not used
+  // The far legs stay in view to the goal; within 0.1 m the camera has read the code and
+  // taken over in any case.
+  double lidar_cutoff_m = 0.1;  ///< [m] remaining path below which the LiDAR is not used
   /// When only two legs are left in the LiDAR's trusted field (the near legs pass beside the
-  /// robot on the final straight), keep measuring the shelf from the two far legs
+  /// robot about 0.5 m before the goal), keep measuring the shelf from the two far legs
   /// (perception::MeasureKnownLegs) down to lidar_cutoff_m instead of driving on odometry alone.
-  /// Off by default: with lidar_cutoff_m 0.25 it took the paper set-up's heading p99 before the
-  /// check from 8.0 to 5.9 mrad, but in cluttered_dock.yaml the camera was then left too little
-  /// straight to correct the goal in 5 of 200 runs (README, Docking).
-  bool two_leg_tracking = false;
+  /// Odometry's heading drift over that last half metre was most of the heading error the LiDAR
+  /// left for the code check (paper set-up, 200 runs: p99 7.0 mrad without, 4.2 with). It was
+  /// off while re-plans that close in could fail and leave the robot on a stale path; the goal
+  /// now moves by bending the path (path_bend.hpp), which does not fail there.
+  bool two_leg_tracking = true;
   double leg_min_range_m = 0.15;     ///< [m] legs nearer the LiDAR than this are not trusted
   double leg_max_bearing_rad = 2.2;  ///< [rad] legs beyond this bearing are not trusted
   double must_detect_by_m = 1.2;     ///< [m] remaining path by which the shelf must be found

@@ -44,6 +44,7 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("min_sigma_yaw_rad", k.min_sigma_yaw_rad);
     f.Read("drift_sigma_xy_per_m", k.drift_sigma_xy_per_m);
     f.Read("drift_sigma_yaw_per_m", k.drift_sigma_yaw_per_m);
+    f.Read("drift_rate_sigma_yaw_per_m", k.drift_rate_sigma_yaw_per_m);
     f.Read("preset_sigma_xy_m", k.preset_sigma_xy_m);
     f.Read("preset_sigma_yaw_rad", k.preset_sigma_yaw_rad);
     f.Read("preset_gate_sigmas", k.preset_gate_sigmas);

@@ -72,6 +72,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.tracker.drift_sigma_xy_per_m = -0.001; }},
     {"tracker_drift_yaw", "tracker.drift_sigma_yaw_per_m",
      [](auto& c) { c.tracker.drift_sigma_yaw_per_m = -0.001; }},
+    {"tracker_drift_rate", "tracker.drift_rate_sigma_yaw_per_m",
+     [](auto& c) { c.tracker.drift_rate_sigma_yaw_per_m = -0.001; }},
     {"tracker_preset_sigma_xy", "tracker.preset_sigma_xy_m",
      [](auto& c) { c.tracker.preset_sigma_xy_m = 0.0; }},
     {"tracker_preset_sigma_yaw", "tracker.preset_sigma_yaw_rad",

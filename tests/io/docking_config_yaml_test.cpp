@@ -60,8 +60,8 @@ TEST_F(DockingConfigYamlTest, ReadsTheCameraCorrectionKeys) {
 }
 
 TEST_F(DockingConfigYamlTest, ReadsTheTwoLegTrackingSwitch) {
-  EXPECT_FALSE(ReadDockingConfig(Write("entry_distance_m: 4.0\n")).two_leg_tracking);
-  EXPECT_TRUE(ReadDockingConfig(Write("two_leg_tracking: true\n")).two_leg_tracking);
+  EXPECT_TRUE(ReadDockingConfig(Write("entry_distance_m: 4.0\n")).two_leg_tracking);
+  EXPECT_FALSE(ReadDockingConfig(Write("two_leg_tracking: false\n")).two_leg_tracking);
   ExpectKeyError("two_leg_tracking: 0.5\n", "two_leg_tracking", "");
 }
 
