@@ -34,14 +34,16 @@ struct Detection {
 /// Why hypotheses (leg sets paired with a model) were not returned, one count per hypothesis
 /// and reason (the first reason that applied).
 struct RejectionCounts {
-  int fit = 0;               ///< shelf fit failed, did not converge or left legs off the model
-  int model = 0;             ///< Eq. 2 on the fitted legs: no longer this model's size
-  int three_leg_error = 0;   ///< 3-leg set beyond the stricter three_leg_err_sum_m
-  int leg_seen_through = 0;  ///< beams pass where a leg of the hypothesis should stand
-  int low_confidence = 0;    ///< the evidence is too weak (confidence < min_confidence)
-  int lost_legs = 0;         ///< its legs went to a better-supported shelf (or a better model)
-  int off_preset = 0;        ///< won its legs, but stands too far from (or turned against) the
-                             ///< preset: a neighbour or clutter, not the expected shelf
+  int fit = 0;                   ///< shelf fit failed, did not converge or left legs off the model
+  int model = 0;                 ///< Eq. 2 on the fitted legs: no longer this model's size
+  int three_leg_error = 0;       ///< 3-leg set beyond the stricter three_leg_err_sum_m
+  int hidden_leg_no_preset = 0;  ///< without a preset, 3 legs whose 4th is hidden by something
+                                 ///< other than its own legs: nothing vouches for it
+  int leg_seen_through = 0;      ///< beams pass where a leg of the hypothesis should stand
+  int low_confidence = 0;        ///< the evidence is too weak (confidence < min_confidence)
+  int lost_legs = 0;             ///< its legs went to a better-supported shelf (or a better model)
+  int off_preset = 0;            ///< won its legs, but stands too far from (or turned against) the
+                                 ///< preset: a neighbour or clutter, not the expected shelf
 };
 
 /// Counters that tell where candidates were dropped; useful when tuning on real scans.
@@ -59,14 +61,15 @@ struct DetectionStats {
 
 /// What became of one hypothesis (a leg set paired with a model).
 enum class Verdict {
-  kReturned,        ///< returned as a detection
-  kFit,             ///< RejectionCounts::fit
-  kModel,           ///< RejectionCounts::model
-  kThreeLegError,   ///< RejectionCounts::three_leg_error
-  kLegSeenThrough,  ///< RejectionCounts::leg_seen_through
-  kLowConfidence,   ///< RejectionCounts::low_confidence
-  kLostLegs,        ///< RejectionCounts::lost_legs
-  kOffPreset,       ///< RejectionCounts::off_preset
+  kReturned,           ///< returned as a detection
+  kFit,                ///< RejectionCounts::fit
+  kModel,              ///< RejectionCounts::model
+  kThreeLegError,      ///< RejectionCounts::three_leg_error
+  kHiddenLegNoPreset,  ///< RejectionCounts::hidden_leg_no_preset
+  kLegSeenThrough,     ///< RejectionCounts::leg_seen_through
+  kLowConfidence,      ///< RejectionCounts::low_confidence
+  kLostLegs,           ///< RejectionCounts::lost_legs
+  kOffPreset,          ///< RejectionCounts::off_preset
 };
 /// The verdict's snake_case name, as in `detect --explain` and `stats.rejected`.
 const char* VerdictName(Verdict verdict);

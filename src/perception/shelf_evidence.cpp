@@ -106,12 +106,15 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   std::array<double, 4> width_errors{};
   double beam_sum = 0.0;
   int width_count = 0;
+  // Its own legs first: an occluded leg may be hidden by one of them (seen along a side).
+  for (int cand : corner_candidate) {
+    if (cand >= 0) own_spans.push_back(pre.candidates[cand].span);
+  }
   for (int k = 0; k < 4; ++k) {
     const int cand = corner_candidate[k];
     if (cand >= 0) {
       const Cluster& c = pre.candidates[cand];
       ev.legs[k] = LegView::kSeen;
-      own_spans.push_back(c.span);
       // Leg size: a post, a person's leg or a box corner is wider than the model's leg.
       const double expected = LegSilhouetteWidth(model.leg, T_lidar_shelf.yaw, c.centroid);
       // One beam either way at the edges, plus the blur of the beam's footprint.
@@ -124,9 +127,24 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       ++width_count;
       continue;
     }
-    LegLook look = LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, config);
+    const Eigen::Vector2d leg = T_lidar_shelf * corners[k];
+    LegLook look = LookAtLeg(leg, model.leg, pre, alpha, config);
     ev.legs[k] = look.view;
+    if (look.view == LegView::kUnobserved && !pre.points.empty()) {
+      // The points are in beam order: the first and last bound the angles the scan covers.
+      const double bearing = std::atan2(leg.y(), leg.x());
+      const double lo = pre.points.front().angle, hi = pre.points.back().angle;
+      if (geometry::AngleDiff(bearing, lo) < 0.0 || geometry::AngleDiff(hi, bearing) < 0.0) {
+        ++ev.legs_out_of_view;
+      }
+    }
     if (look.view == LegView::kOccluded) {
+      for (int span : look.occluder_spans) {
+        if (std::find(own_spans.begin(), own_spans.end(), span) == own_spans.end()) {
+          ++ev.legs_hidden_by_other;
+          break;
+        }
+      }
       // The object hiding a leg may stand under the shelf (a box in front of a back leg): it
       // explains the missing leg, so it does not count against the free space either.
       excused_spans.insert(excused_spans.end(), look.occluder_spans.begin(),

@@ -64,6 +64,33 @@ TEST(ShelfEvidenceTest, FourthCornerBehindABoxIsExcused) {
   EXPECT_LT(geometry::Distance(r.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
 }
 
+TEST(ShelfEvidenceTest, WithoutAPresetAFourthCornerBehindSomethingElseVouchesForNothing) {
+  // The scene above without a preset: nothing says a shelf stands there, and three posts with a
+  // box in front of the fourth corner are what clutter makes. Not returned, and counted.
+  const auto models = PaperModels();
+  const geometry::Pose2 T_shelf(2.2, 0.1, 0.3);
+  sim::World world = ThreeCornerPosts(T_shelf);
+  const Eigen::Vector2d hidden = T_shelf * models[3].LegCentres()[kEmptyCorner];
+  const Eigen::Vector2d box = hidden - 0.3 * hidden.normalized();
+  world.AddBox({geometry::Pose2(box.x(), box.y(), 0.0), 0.2, 0.2});
+  const Detector detector(models);
+  const DetectionResult r = detector.Detect(SimScan(world, {}, 3));
+  EXPECT_TRUE(r.detections.empty());
+  EXPECT_GE(r.stats.rejected.hidden_leg_no_preset, 1);
+  // A real shelf seen along its side hides a back leg behind its own front leg: that one needs
+  // no preset (the sensor on the line of one long side: its back leg stands behind the front).
+  sim::World side;
+  testing::AddRoom(side);
+  const geometry::Pose2 T_side(2.5, -0.5 * models[3].width_m, 0.0);
+  side.AddShelf(1, models[3], T_side);
+  const DetectionResult rs = detector.Detect(SimScan(side, {}, 4));
+  ASSERT_FALSE(rs.detections.empty());
+  EXPECT_LT(geometry::Distance(rs.detections[0].T_lidar_shelf, T_side), kCentreTol);
+  EXPECT_EQ(rs.detections[0].legs_used, 3);
+  EXPECT_EQ(rs.detections[0].legs_occluded, 1);
+  EXPECT_EQ(rs.stats.rejected.hidden_leg_no_preset, 0);
+}
+
 // A 3-leg set whose fitted legs miss the model by 4-5 cm (err_sum; one post moved outward, as
 // far legs under 20 mm range noise can come out): with a preset it is within
 // three_leg_err_sum_preset_m and goes on to the evidence (returned, or rejected for a reason of
