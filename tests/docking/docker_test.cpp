@@ -332,6 +332,30 @@ TEST(Docker, ANeighbourShelfInViewDoesNotMoveTheGoal) {
   EXPECT_LT(std::abs(run.Error().y), kAfterXy_m);
 }
 
+TEST(Docker, AGoalThatMovesCloseInBendsThePathAndTheRobotStopsOnIt) {
+  // Detections 4 mm / 4 mrad off until the base is about 0.45 m from the goal, exact after
+  // (the far legs alone, close in): the goal moves when little straight is left. The path is
+  // bent onto it each time (no re-plan from the robot's pose fails or kicks the controller) and
+  // the LiDAR alone, without the camera's guidance, stops the robot within the code check's
+  // tolerance: no adjustment.
+  ScriptedRun run;
+  run.config.camera_guide.enabled = false;
+  auto base = run.detect;
+  run.detect = [base](const Pose2& T, int scan) {
+    const bool far = T.translation().norm() > 0.75;
+    return base(far ? T * Pose2(0.0, 0.004, 0.004) : T, scan);
+  };
+  const Outcome outcome = run.Run();
+  ASSERT_TRUE(outcome.ok()) << outcome.reason;
+  EXPECT_TRUE(run.Event("plan_bent"));
+  EXPECT_FALSE(run.Event("plan_failed"));
+  EXPECT_FALSE(run.Event("adjust"));
+  const Pose2 e = run.Error();
+  EXPECT_LT(std::abs(e.x), run.config.verify.tolerance_xy_m);
+  EXPECT_LT(std::abs(e.y), run.config.verify.tolerance_xy_m);
+  EXPECT_LT(std::abs(e.yaw), run.config.verify.tolerance_yaw_rad);
+}
+
 TEST(Docker, APushOffThePathIsATrackingFailure) {
   ScriptedRun run;
   run.each_step = [](ScriptedRun* r) {
