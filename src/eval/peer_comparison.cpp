@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include "eval/monte_carlo.hpp"
 #include "eval/peers/centroid_peer.hpp"
@@ -36,6 +37,8 @@ std::string_view PeerMethodName(PeerMethod method) {
       return "centroid-only";
     case PeerMethod::kCorner:
       return "corner-finding";
+    case PeerMethod::kIcp:
+      return "icp-pcl";
   }
   return "?";
 }
@@ -43,35 +46,39 @@ std::string_view PeerMethodName(PeerMethod method) {
 std::vector<PeerRow> ComparePeers(const PeerSceneSet& set,
                                   const std::vector<geometry::ShelfModel>& models,
                                   const perception::DetectorConfig& detector_config,
-                                  const ClockFn& now_s, const PeerScoring& scoring) {
+                                  const ClockFn& now_s, const PeerDetectFn& icp,
+                                  const PeerScoring& scoring) {
   const perception::Detector detector(models, detector_config);
+  using Scan = geometry::LaserScan;
+  using Preset = std::optional<geometry::Pose2>;
+  std::vector<std::pair<PeerMethod, PeerDetectFn>> methods = {
+      {PeerMethod::kShelfdock,
+       [&](const Scan& scan, const Preset& preset) -> std::optional<peers::PeerEstimate> {
+         const perception::DetectionResult r = detector.Detect(scan, preset);
+         if (r.detections.empty()) return std::nullopt;
+         return peers::PeerEstimate{r.detections[0].model, r.detections[0].T_lidar_shelf,
+                                    r.detections[0].legs_used};
+       }},
+      {PeerMethod::kCentroid,
+       [&](const Scan& scan, const Preset& preset) {
+         return peers::CentroidPeerDetect(scan, preset, models, detector_config);
+       }},
+      {PeerMethod::kCorner,
+       [&](const Scan& scan, const Preset& preset) {
+         return peers::CornerPeerDetect(scan, preset, models, detector_config);
+       }},
+  };
+  if (icp) methods.emplace_back(PeerMethod::kIcp, icp);
+
   std::vector<PeerRow> rows;
-  for (PeerMethod method : kAllPeerMethods) {
+  for (const auto& [method, detect] : methods) {
     PeerRow row;
     row.set = set.name;
     row.method = method;
     std::vector<double> pos, yaw, time;
     for (const PeerScene& scene : set.scenes) {
-      std::optional<peers::PeerEstimate> answer;
       const double t0 = now_s();
-      switch (method) {
-        case PeerMethod::kShelfdock: {
-          const perception::DetectionResult r = detector.Detect(scene.scan, scene.T_lidar_preset);
-          if (!r.detections.empty()) {
-            answer = peers::PeerEstimate{r.detections[0].model, r.detections[0].T_lidar_shelf,
-                                         r.detections[0].legs_used};
-          }
-          break;
-        }
-        case PeerMethod::kCentroid:
-          answer =
-              peers::CentroidPeerDetect(scene.scan, scene.T_lidar_preset, models, detector_config);
-          break;
-        case PeerMethod::kCorner:
-          answer =
-              peers::CornerPeerDetect(scene.scan, scene.T_lidar_preset, models, detector_config);
-          break;
-      }
+      const std::optional<peers::PeerEstimate> answer = detect(scene.scan, scene.T_lidar_preset);
       time.push_back(now_s() - t0);
       ++row.scenes;
       if (!answer || answer->model != scene.model) continue;

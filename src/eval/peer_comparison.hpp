@@ -2,11 +2,14 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "eval/peer_scenes.hpp"
+#include "eval/peers/peer_estimate.hpp"
+#include "geometry/laser_scan.hpp"
 #include "geometry/shelf_model.hpp"
 #include "perception/detector_config.hpp"
 
@@ -17,10 +20,9 @@ enum class PeerMethod {
   kShelfdock,  ///< perception::Detector
   kCentroid,   ///< peers::CentroidPeerDetect: no leg fit (3.3), no shelf fit (3.4)
   kCorner,     ///< peers::CornerPeerDetect: corner finding as open ROS shelf detectors
+  kIcp,        ///< peers::IcpPeer: PCL ICP on the legs' outline; its own library, built only
+               ///< with SHELFDOCK_WITH_PCL, so ComparePeers takes it as a function
 };
-/// Every method `eval peers` compares, shelfdock first.
-inline constexpr PeerMethod kAllPeerMethods[] = {PeerMethod::kShelfdock, PeerMethod::kCentroid,
-                                                 PeerMethod::kCorner};
 /// The method's name in tables and JSON.
 std::string_view PeerMethodName(PeerMethod method);
 
@@ -63,11 +65,16 @@ struct SearchRow {
 /// A clock in seconds, injected by the caller (the core does not read the clock itself).
 using ClockFn = std::function<double()>;
 
-/// Runs every method on every scene of `set` and scores it against the truth; each call timed
-/// with `now_s`.
+/// One scan in, the method's shelf out (nullopt: none found).
+using PeerDetectFn = std::function<std::optional<peers::PeerEstimate>(
+    const geometry::LaserScan& scan, const std::optional<geometry::Pose2>& T_lidar_preset)>;
+
+/// Runs shelfdock, centroid-only, corner-finding and, when the caller has one, `icp` (kIcp's row)
+/// on every scene of `set` and scores each against the truth; each call timed with `now_s`.
 std::vector<PeerRow> ComparePeers(const PeerSceneSet& set,
                                   const std::vector<geometry::ShelfModel>& models,
                                   const perception::DetectorConfig& detector, const ClockFn& now_s,
+                                  const PeerDetectFn& icp = nullptr,
                                   const PeerScoring& scoring = {});
 
 /// Counts and times the pruned and the exhaustive leg search on every scene of `set`, over all

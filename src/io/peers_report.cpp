@@ -1,6 +1,7 @@
 #include "io/peers_report.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "io/report_format.hpp"
 
@@ -19,6 +20,17 @@ const eval::PeerRow* Reference(const std::vector<eval::PeerRow>& rows, const std
     if (r.set == set && r.method == eval::PeerMethod::kShelfdock) return &r;
   }
   return nullptr;
+}
+
+/// The ICP rows with shelfdock's row of the same set.
+std::vector<std::pair<const eval::PeerRow*, const eval::PeerRow*>> IcpPairs(
+    const std::vector<eval::PeerRow>& rows) {
+  std::vector<std::pair<const eval::PeerRow*, const eval::PeerRow*>> out;
+  for (const auto& r : rows) {
+    if (r.method != eval::PeerMethod::kIcp) continue;
+    if (const eval::PeerRow* ref = Reference(rows, r.set)) out.emplace_back(&r, ref);
+  }
+  return out;
 }
 
 }  // namespace
@@ -44,6 +56,25 @@ std::vector<std::string> PeerTableLines(const std::vector<eval::PeerRow>& rows) 
         FormatNumber(r.position_m.p95, 1e3) + " | " + FormatNumber(r.heading_rad.p50, 1e3) + " / " +
         FormatNumber(r.heading_rad.p95, 1e3) + " | " + FormatNumber(r.time_s.p50, 1e6, 0) + " / " +
         FormatNumber(r.time_s.p95, 1e6, 0) + " | " + ratio + " |");
+  }
+  return out;
+}
+
+std::vector<std::string> IcpTargetLines(const std::vector<eval::PeerRow>& rows) {
+  const auto pairs = IcpPairs(rows);
+  if (pairs.empty()) return {kIcpNotBuilt};
+  std::vector<std::string> out;
+  for (const auto& [icp, ref] : pairs) {
+    const double ratio = icp->time_s.p50 / ref->time_s.p50;
+    const std::string verdict =
+        ratio >= kIcpSpeedTarget
+            ? "met"
+            : "**missed** by " + FormatNumber(kIcpSpeedTarget / ratio, 1.0, 2) + "x";
+    out.push_back("- " + icp->set + ": shelfdock " + FormatNumber(ratio, 1.0, 1) +
+                  "x faster than ICP (median " + FormatNumber(ref->time_s.p50, 1e6, 0) +
+                  " us against " + FormatNumber(icp->time_s.p50, 1e6, 0) +
+                  " us per scan; target >= " + FormatNumber(kIcpSpeedTarget, 1.0, 0) +
+                  "x: " + verdict + ")");
   }
   return out;
 }
@@ -94,7 +125,15 @@ nlohmann::json PeersJson(const std::vector<eval::PeerRow>& rows,
                     {"pruned_time_s", Json(r.pruned_time_s)},
                     {"exhaustive_time_s", Json(r.exhaustive_time_s)}});
   }
-  return {{"accuracy", accuracy}, {"search", work}};
+  nlohmann::json icp_sets = nlohmann::json::array();
+  for (const auto& [icp, ref] : IcpPairs(rows)) {
+    const double ratio = icp->time_s.p50 / ref->time_s.p50;
+    icp_sets.push_back(
+        {{"set", icp->set}, {"time_ratio", Json(ratio)}, {"met", ratio >= kIcpSpeedTarget}});
+  }
+  const nlohmann::json icp{
+      {"built", !icp_sets.empty()}, {"speed_target", kIcpSpeedTarget}, {"sets", icp_sets}};
+  return {{"accuracy", accuracy}, {"icp", icp}, {"search", work}};
 }
 
 }  // namespace shelfdock::io

@@ -67,6 +67,18 @@ def check_paper(doc, stdout):
 
 def check_peers(doc, stdout):
     methods = {"shelfdock", "centroid-only", "corner-finding"}
+    # The ICP peer is in only when the build has SHELFDOCK_WITH_PCL; otherwise the output says
+    # how to build it.
+    icp = doc["icp"]
+    if icp["built"]:
+        methods.add("icp-pcl")
+        assert len(icp["sets"]) == 7, icp
+        for row in icp["sets"]:
+            finite(row["time_ratio"], f"{row['set']} ICP time ratio")
+        assert "target >= 20x" in stdout, stdout
+    else:
+        assert icp["sets"] == [], icp
+        assert "-DSHELFDOCK_WITH_PCL=ON" in stdout, stdout
     sets = {}
     for row in doc["accuracy"]:
         sets.setdefault(row["set"], set()).add(row["method"])
