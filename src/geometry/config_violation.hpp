@@ -8,7 +8,8 @@ namespace shelfdock::geometry {
 
 /// An impossible configuration value: its dotted key (e.g. `controller.max_speed_mps`, as in the
 /// YAML file) and the rule it breaks ("> 0"). Every config struct has one function that checks
-/// all of its fields and returns the first of these; the YAML loaders only add the file name.
+/// all of its fields and returns the first of these; the YAML loaders only add the file name
+/// (and, for an entry of a list, its path: `people[1].`).
 struct ConfigViolation {
   std::string key;
   std::string requirement;
