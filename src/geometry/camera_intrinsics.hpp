@@ -1,5 +1,9 @@
 #pragma once
 
+#include <optional>
+
+#include "geometry/config_violation.hpp"
+
 namespace shelfdock::geometry {
 
 /// Pinhole intrinsics of a camera without lens distortion (the simulator renders none and the
@@ -13,5 +17,10 @@ struct CameraIntrinsics {
   double cx_px = 319.5;  ///< [px] principal point, column
   double cy_px = 239.5;  ///< [px] principal point, row
 };
+
+/// The first impossible value of the intrinsics (keys as under `intrinsics` in
+/// config/camera.yaml: `fx_px`, ...): sizes up to 32768 px, positive focal lengths, the
+/// principal point inside the image.
+std::optional<ConfigViolation> FindConfigViolation(const CameraIntrinsics& intrinsics);
 
 }  // namespace shelfdock::geometry

@@ -1,9 +1,13 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
+
+#include "geometry/config_violation.hpp"
 
 namespace shelfdock::geometry {
 
@@ -34,5 +38,14 @@ struct ShelfModel {
   /// Leg centres in the shelf frame, counter-clockwise from (-L/2, -W/2).
   std::array<Eigen::Vector2d, 4> LegCentres() const;
 };
+
+/// The first impossible value of a leg section (keys `length`, `width`) or of a shelf model
+/// (keys as in config/models.yaml: `name`, `length`, `width`, `leg.length`, ...): positive
+/// sizes, the long side as length, legs narrower than the shelf.
+std::optional<ConfigViolation> FindConfigViolation(const LegModel& leg);
+std::optional<ConfigViolation> FindConfigViolation(const ShelfModel& model);
+/// A set of models as config/models.yaml lists them: each model's rules under `models[i].`, and
+/// names unique across the set.
+std::optional<ConfigViolation> FindConfigViolation(const std::vector<ShelfModel>& models);
 
 }  // namespace shelfdock::geometry

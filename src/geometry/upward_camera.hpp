@@ -1,6 +1,9 @@
 #pragma once
 
+#include <optional>
+
 #include "geometry/camera_intrinsics.hpp"
+#include "geometry/config_violation.hpp"
 
 namespace shelfdock::geometry {
 
@@ -17,5 +20,9 @@ struct UpwardCamera {
   double code_size_m = 0.08;    ///< [m] side of the code's outer black border
   double code_height_m = 0.30;  ///< [m] height of the code (shelf underside) above the lens
 };
+
+/// The first impossible value of the camera and code, keys as in config/camera.yaml: the
+/// intrinsics' under `intrinsics`, the code's size and height under `code`.
+std::optional<ConfigViolation> FindConfigViolation(const UpwardCamera& camera);
 
 }  // namespace shelfdock::geometry

@@ -13,20 +13,12 @@ void ReadIntrinsics(YamlFields f, geometry::CameraIntrinsics& k) {
   f.Read("cx_px", k.cx_px);
   f.Read("cy_px", k.cy_px);
   f.RejectUnknown();
-  f.Require(k.width_px > 0 && k.width_px <= 32768, "width_px", "in 1..32768 pixels");
-  f.Require(k.height_px > 0 && k.height_px <= 32768, "height_px", "in 1..32768 pixels");
-  f.Require(k.fx_px > 0.0, "fx_px", "> 0 pixels");
-  f.Require(k.fy_px > 0.0, "fy_px", "> 0 pixels");
-  f.Require(k.cx_px >= 0.0 && k.cx_px <= k.width_px, "cx_px", "inside the image (0..width)");
-  f.Require(k.cy_px >= 0.0 && k.cy_px <= k.height_px, "cy_px", "inside the image (0..height)");
 }
 
 void ReadCode(YamlFields f, geometry::UpwardCamera& cam) {
   f.Read("code_size_m", cam.code_size_m);
   f.Read("code_height_m", cam.code_height_m);
   f.RejectUnknown();
-  f.Require(cam.code_size_m > 0.0, "code_size_m", "> 0 (outer black border side, metres)");
-  f.Require(cam.code_height_m > 0.0, "code_height_m", "> 0 (code above the lens, metres)");
 }
 
 void ReadRender(YamlFields f, sim::CameraConfig& c) {
@@ -38,16 +30,6 @@ void ReadRender(YamlFields f, sim::CameraConfig& c) {
   f.Read("black_level", c.black_level);
   f.Read("background_level", c.background_level);
   f.RejectUnknown();
-  f.Require(c.supersample >= 1 && c.supersample <= 16, "supersample", "in 1..16");
-  f.Require(c.blur_sigma_px >= 0.0 && c.blur_sigma_px <= 20.0, "blur_sigma_px", "in 0..20 pixels");
-  f.Require(c.noise_std >= 0.0, "noise_std", ">= 0 grey levels");
-  f.Require(c.exposure > 0.0, "exposure", "> 0");
-  for (const auto& [key, level] :
-       {std::pair{"white_level", c.white_level}, std::pair{"black_level", c.black_level},
-        std::pair{"background_level", c.background_level}}) {
-    f.Require(level >= 0.0 && level <= 255.0, key, "in 0..255 grey levels");
-  }
-  f.Require(c.white_level > c.black_level, "white_level", "> black_level");
 }
 
 void ReadDetector(YamlFields f, perception::MarkerDetectorConfig& d) {
@@ -59,12 +41,6 @@ void ReadDetector(YamlFields f, perception::MarkerDetectorConfig& d) {
   f.Read("min_decision_margin", d.min_decision_margin);
   f.Read("max_height_error_m", d.max_height_error_m);
   f.RejectUnknown();
-  f.Require(d.quad_decimate >= 1.0, "quad_decimate", ">= 1");
-  f.Require(d.quad_sigma_px >= 0.0, "quad_sigma_px", ">= 0 pixels");
-  f.Require(d.decode_sharpening >= 0.0, "decode_sharpening", ">= 0");
-  f.Require(d.max_hamming >= 0 && d.max_hamming <= 2, "max_hamming", "0, 1 or 2 bits");
-  f.Require(d.min_decision_margin >= 0.0, "min_decision_margin", ">= 0");
-  f.Require(d.max_height_error_m > 0.0, "max_height_error_m", "> 0 metres");
 }
 
 }  // namespace
@@ -77,8 +53,12 @@ CameraSetup ReadCameraSetup(const std::string& path) {
                  setup.camera.camera.intrinsics);
   ReadCode(YamlFields(top.Child("code"), path, "code"), setup.camera.camera);
   ReadRender(YamlFields(top.Child("render"), path, "render"), setup.camera);
-  ReadDetector(YamlFields(top.Child("detector"), path, "detector"), setup.detector);
+  const YamlFields detector(top.Child("detector"), path, "detector");
+  ReadDetector(detector, setup.detector);
   top.RejectUnknown();
+  // The rules live with the structs: the camera's keys already name their maps.
+  top.Reject(sim::FindConfigViolation(setup.camera));
+  detector.Reject(perception::FindConfigViolation(setup.detector));
   return setup;
 }
 

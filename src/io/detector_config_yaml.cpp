@@ -98,10 +98,7 @@ perception::DetectorConfig ReadDetectorConfig(const std::string& path) {
   ReadEvidence(YamlFields(top.Child("evidence"), path, "evidence"), config.evidence);
   ReadPresetGate(YamlFields(top.Child("preset_gate"), path, "preset_gate"), config.preset_gate);
   top.RejectUnknown();
-  // The rules live with the struct; here they only gain the file name.
-  if (const auto v = perception::FindConfigViolation(config)) {
-    throw InputError(path, v->key, "must be " + v->requirement);
-  }
+  top.Reject(perception::FindConfigViolation(config));  // the rules live with the struct
   return config;
 }
 

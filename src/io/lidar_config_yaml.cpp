@@ -42,7 +42,7 @@ sim::LidarConfig ReadLidarConfig(const std::string& path) {
   std::string name;  // a label for the preset, for the reader of the file only
   f.Read("name", name);
   f.RejectUnknown();
-  if (const auto error = sim::Validate(c)) f.Require(false, error->field, error->requirement);
+  f.Reject(sim::FindConfigViolation(c));
   return c;
 }
 

@@ -1,7 +1,5 @@
 #include "io/models_yaml.hpp"
 
-#include <set>
-
 #include "io/input_limits.hpp"
 #include "io/yaml_fields.hpp"
 
@@ -22,22 +20,15 @@ std::vector<geometry::ShelfModel> ReadShelfModels(const std::string& path) {
   }
 
   std::vector<geometry::ShelfModel> models;
-  std::set<std::string> names;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string where = "models[" + std::to_string(i) + "]";
     YamlFields f(list[i], path, where);
-    geometry::ShelfModel m;
+    geometry::ShelfModel m;  // sizes are required: 0 makes an absent one break its "> 0" rule
     m.length_m = 0.0;
     m.width_m = 0.0;
     f.Read("name", m.name);
     f.Read("length", m.length_m);
     f.Read("width", m.width_m);
-    f.Require(!m.name.empty(), "name", "a non-empty string");
-    f.Require(names.insert(m.name).second, "name", "unique among the models");
-    f.Require(m.length_m > 0.0, "length", "> 0 (leg centre to leg centre, metres)");
-    f.Require(m.width_m > 0.0, "width", "> 0 (leg centre to leg centre, metres)");
-    f.Require(m.length_m >= m.width_m, "length", ">= width (length is the long side)");
-
     YamlFields leg(f.Child("leg"), path, where + ".leg");
     f.RejectUnknown();
     std::string shape = "rectangle";
@@ -55,11 +46,9 @@ std::vector<geometry::ShelfModel> ReadShelfModels(const std::string& path) {
     } else {
       throw InputError(path, where + ".leg.shape", "expected rectangle or circle, got " + shape);
     }
-    leg.Require(m.leg.length_m > 0.0, "length", "> 0 (metres)");
-    leg.Require(m.leg.width_m > 0.0, "width", "> 0 (metres)");
-    leg.Require(m.leg.length_m < m.width_m, "length", "smaller than the shelf's width");
     models.push_back(m);
   }
+  top.Reject(geometry::FindConfigViolation(models));  // keys `models[i].name`, ...
   return models;
 }
 

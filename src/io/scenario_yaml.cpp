@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
 
 #include "io/input_limits.hpp"
 #include "io/yaml_fields.hpp"
@@ -64,13 +63,6 @@ std::vector<Eigen::Vector2d> ReadPoints(YamlFields& parent, const std::string& k
 void ReadMaterial(YamlFields& f, sim::Material* m) {
   f.Read("reflectivity", m->reflectivity);
   f.Read("shiny", m->shiny);
-  f.Require(m->reflectivity >= 0.0 && m->reflectivity <= 1.0, "reflectivity", "in [0, 1]");
-}
-
-double ReadHeight(YamlFields& f, double height_m) {
-  f.Read("height", height_m);
-  f.Require(height_m > 0.0, "height", "> 0 (metres)");
-  return height_m;
 }
 
 sim::PathMotion ReadPath(YamlFields& f) {
@@ -79,7 +71,6 @@ sim::PathMotion ReadPath(YamlFields& f) {
   f.Read("speed", m.speed_mps);
   f.Read("closed", m.closed);
   f.Read("start_offset", m.start_offset_m);
-  f.Require(m.speed_mps >= 0.0 && m.speed_mps < 10.0, "speed", "in [0, 10) m/s");
   return m;
 }
 
@@ -119,13 +110,10 @@ sim::Scenario ReadScenario(const std::string& path,
   top.Read("target_shelf", s.target_shelf_id);
   s.T_map_robot_start = ReadPose(top, "robot_start");
 
-  std::set<int> ids;
   ForEach(top, "shelves", [&](YamlFields& f) {
     sim::ScenarioShelf shelf;
-    shelf.id = -1;
+    shelf.id = -1;  // required: an absent id breaks the struct's ">= 0" rule
     f.Read("id", shelf.id);
-    f.Require(shelf.id >= 0, "id", "given, an integer >= 0 (the code under the shelf)");
-    f.Require(ids.insert(shelf.id).second, "id", "unique among the shelves");
     f.Read("model", shelf.model_name);
     const geometry::ShelfModel* model = FindModel(models, shelf.model_name);
     f.Require(model != nullptr, "model", "a model name from the models file");
@@ -133,13 +121,10 @@ sim::Scenario ReadScenario(const std::string& path,
     if (f.Child("preset").IsDefined()) shelf.T_map_shelf_preset = ReadPose(f, "preset");
     const YAML::Node offset = f.Child("preset_offset");
     if (offset.IsDefined()) {
-      f.Require(!shelf.T_map_shelf_preset, "preset_offset", "absent when preset is given");
       YamlFields o(offset, path, f.KeyPath("preset_offset"));
       o.Read("xy_m", shelf.preset_offset_xy_m);
       o.Read("yaw_rad", shelf.preset_offset_yaw_rad);
       o.RejectUnknown();
-      o.Require(shelf.preset_offset_xy_m >= 0.0, "xy_m", ">= 0 (metres)");
-      o.Require(shelf.preset_offset_yaw_rad >= 0.0, "yaw_rad", ">= 0 (radians)");
     }
     sim::ShelfInstance instance;
     instance.id = shelf.id;
@@ -147,9 +132,7 @@ sim::Scenario ReadScenario(const std::string& path,
     instance.T_world_shelf = shelf.T_map_shelf;
     f.Read("leg_reflectivity", instance.leg_material.reflectivity);
     f.Read("leg_shiny", instance.leg_material.shiny);
-    f.Require(
-        instance.leg_material.reflectivity >= 0.0 && instance.leg_material.reflectivity <= 1.0,
-        "leg_reflectivity", "in [0, 1]");
+    f.Reject(sim::FindConfigViolation(instance));
     s.world.AddShelf(instance);
     s.shelves.push_back(shelf);
   });
@@ -157,8 +140,9 @@ sim::Scenario ReadScenario(const std::string& path,
     sim::Wall wall;
     wall.points = ReadPoints(f, "points", 2);
     f.Read("closed", wall.closed);
-    wall.height_m = ReadHeight(f, wall.height_m);
+    f.Read("height", wall.height_m);
     ReadMaterial(f, &wall.material);
+    f.Reject(sim::FindConfigViolation(wall));
     s.world.AddWall(wall);
   });
   ForEach(top, "boxes", [&](YamlFields& f) {
@@ -166,10 +150,9 @@ sim::Scenario ReadScenario(const std::string& path,
     box.T_world_box = ReadPose(f, "pose");
     f.Read("length", box.length_m);
     f.Read("width", box.width_m);
-    f.Require(box.length_m > 0.0, "length", "> 0 (metres)");
-    f.Require(box.width_m > 0.0, "width", "> 0 (metres)");
-    box.height_m = ReadHeight(f, box.height_m);
+    f.Read("height", box.height_m);
     ReadMaterial(f, &box.material);
+    f.Reject(sim::FindConfigViolation(box));
     s.world.AddBox(box);
   });
   ForEach(top, "posts", [&](YamlFields& f) {
@@ -177,6 +160,8 @@ sim::Scenario ReadScenario(const std::string& path,
     double size_m = kUnset;
     f.Read("shape", shape);
     f.Read("size", size_m);
+    // `size` is no struct's field: it becomes a round post's diameter or a square post's
+    // sides, so it is checked here, before it is turned into either.
     f.Require(std::isfinite(size_m) && size_m > 0.0, "size",
               "given, > 0 (diameter or side, metres)");
     const geometry::Pose2 pose = ReadPose(f, "pose");
@@ -185,6 +170,7 @@ sim::Scenario ReadScenario(const std::string& path,
       post.centre = pose.translation();
       post.radius_m = 0.5 * size_m;
       ReadMaterial(f, &post.material);
+      f.Reject(sim::FindConfigViolation(post.material));
       s.world.AddRoundPost(post);
     } else if (shape == "square") {
       sim::Box box;
@@ -192,6 +178,7 @@ sim::Scenario ReadScenario(const std::string& path,
       box.length_m = size_m;
       box.width_m = size_m;
       ReadMaterial(f, &box.material);
+      f.Reject(sim::FindConfigViolation(box));
       s.world.AddBox(box);
     } else {
       f.Require(false, "shape", "round or square");
@@ -203,11 +190,9 @@ sim::Scenario ReadScenario(const std::string& path,
     f.Read("leg_radius", person.leg_radius_m);
     f.Read("leg_spacing", person.leg_spacing_m);
     f.Read("stride", person.stride_m);
-    f.Require(person.leg_radius_m > 0.0, "leg_radius", "> 0 (metres)");
-    f.Require(person.leg_spacing_m >= 0.0, "leg_spacing", ">= 0 (metres)");
-    f.Require(person.stride_m >= 0.0, "stride", ">= 0 (metres)");
-    person.height_m = ReadHeight(f, person.height_m);
+    f.Read("height", person.height_m);
     ReadMaterial(f, &person.material);
+    f.Reject(sim::FindConfigViolation(person));
     s.world.AddPerson(person);
   });
   ForEach(top, "robots", [&](YamlFields& f) {
@@ -215,17 +200,14 @@ sim::Scenario ReadScenario(const std::string& path,
     robot.path = ReadPath(f);
     f.Read("length", robot.length_m);
     f.Read("width", robot.width_m);
-    f.Require(robot.length_m > 0.0, "length", "> 0 (metres)");
-    f.Require(robot.width_m > 0.0, "width", "> 0 (metres)");
-    robot.height_m = ReadHeight(f, robot.height_m);
+    f.Read("height", robot.height_m);
     ReadMaterial(f, &robot.material);
+    f.Reject(sim::FindConfigViolation(robot));
     s.world.AddRobot(robot);
   });
   top.RejectUnknown();
-  if (s.target_shelf_id != -1) {
-    top.Require(s.FindShelf(s.target_shelf_id) != nullptr, "target_shelf",
-                "the id of a shelf in this scenario");
-  }
+  // The shelves' rules, their ids' uniqueness and the target live with sim::Scenario.
+  top.Reject(sim::FindConfigViolation(s));
   return s;
 }
 

@@ -92,6 +92,12 @@ void YamlFields::Require(bool ok, const std::string& key, const std::string& req
   if (!ok) throw InputError(file_, KeyPath(key), "must be " + requirement);
 }
 
+void YamlFields::Reject(const std::optional<geometry::ConfigViolation>& violation) const {
+  if (violation) {
+    throw InputError(file_, KeyPath(violation->key), "must be " + violation->requirement);
+  }
+}
+
 void YamlFields::RejectUnknown() const {
   if (!node_.IsDefined() || node_.IsNull()) return;
   for (const auto& kv : node_) {

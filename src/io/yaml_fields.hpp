@@ -1,10 +1,12 @@
 #pragma once
 
+#include <optional>
 #include <set>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
 
+#include "geometry/config_violation.hpp"
 #include "io/input_error.hpp"
 
 namespace shelfdock::io {
@@ -33,8 +35,13 @@ class YamlFields {
   /// (`new_key_path`, dotted from the document's root).
   void Renamed(const std::string& old_key, const std::string& new_key_path);
 
-  /// Throws InputError when `ok` is false, naming `key` and the requirement.
+  /// Throws InputError when `ok` is false, naming `key` and the requirement. For parse rules
+  /// only (a required key, a name to look up); value rules live with their structs.
   void Require(bool ok, const std::string& key, const std::string& requirement) const;
+
+  /// Throws InputError for a config struct's violation (its FindConfigViolation): the file, the
+  /// violation's key under this map's path, and "must be " + its requirement.
+  void Reject(const std::optional<geometry::ConfigViolation>& violation) const;
 
   /// Throws InputError for the first key of the map that no Read/Child asked for.
   void RejectUnknown() const;

@@ -111,4 +111,15 @@ std::optional<MarkerObservation> MarkerDetector::Detect(const geometry::GrayImag
   return all.front();
 }
 
+std::optional<geometry::ConfigViolation> FindConfigViolation(const MarkerDetectorConfig& c) {
+  geometry::ConfigChecker k;  // refine_edges: either value
+  k.Check(c.quad_decimate >= 1.0, "quad_decimate", ">= 1");
+  k.Check(c.quad_sigma_px >= 0.0, "quad_sigma_px", ">= 0 pixels");
+  k.Check(c.decode_sharpening >= 0.0, "decode_sharpening", ">= 0");
+  k.Check(c.max_hamming >= 0 && c.max_hamming <= 2, "max_hamming", "0, 1 or 2 bits");
+  k.Check(c.min_decision_margin >= 0.0, "min_decision_margin", ">= 0");
+  k.Check(c.max_height_error_m > 0.0, "max_height_error_m", "> 0 metres");
+  return k.Result();
+}
+
 }  // namespace shelfdock::perception

@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/gray_image.hpp"
 #include "geometry/pose2.hpp"
 #include "geometry/upward_camera.hpp"
@@ -21,6 +22,10 @@ struct MarkerDetectorConfig {
   double min_decision_margin = 20.0;  ///< [-] weaker decodings are dropped
   double max_height_error_m = 0.05;   ///< [m] reject when the code's estimated height differs
 };
+
+/// The first impossible value of the detector settings (keys as under `detector` in
+/// config/camera.yaml): decimation >= 1, at most 2 corrected bits, no negative blur or margin.
+std::optional<geometry::ConfigViolation> FindConfigViolation(const MarkerDetectorConfig& config);
 
 /// One code seen by the upward camera.
 struct MarkerObservation {

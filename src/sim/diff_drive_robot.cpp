@@ -84,4 +84,21 @@ std::array<Eigen::Vector2d, 4> DiffDriveRobot::FootprintCorners() const {
           T_world_base_ * Eigen::Vector2d(-hl, -hw), T_world_base_ * Eigen::Vector2d(hl, -hw)};
 }
 
+std::optional<geometry::ConfigViolation> FindConfigViolation(const DiffDriveConfig& c) {
+  geometry::ConfigChecker k;
+  k.Nested("odometry", FindConfigViolation(c.odometry));
+  k.Nested("localisation", FindConfigViolation(c.localisation));
+  k.Check(c.max_v_mps > 0.0, "max_v_mps", "> 0 m/s");
+  k.Check(c.max_w_radps > 0.0, "max_w_radps", "> 0 rad/s");
+  k.Check(c.max_accel_mps2 > 0.0, "max_accel_mps2", "> 0 m/s^2");
+  k.Check(c.max_alpha_radps2 > 0.0, "max_alpha_radps2", "> 0 rad/s^2");
+  k.Check(c.wheel_base_m > 0.0, "wheel_base_m", "> 0 metres");
+  k.Check(c.footprint_length_m > 0.0, "footprint_length_m", "> 0 metres");
+  k.Check(c.footprint_width_m > 0.0, "footprint_width_m", "> 0 metres");
+  k.Check(c.control_rate_hz > 0.0, "control_rate_hz", "> 0 Hz");
+  k.Check(c.lift_duration_s >= 0.0, "lift_duration_s", ">= 0 seconds");  // 0: instant
+  k.Check(c.history_s > 0.0, "history_s", "> 0 seconds");
+  return k.Result();
+}
+
 }  // namespace shelfdock::sim

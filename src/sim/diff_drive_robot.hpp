@@ -3,9 +3,11 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <optional>
 
 #include <Eigen/Core>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/pose2.hpp"
 #include "sim/lift.hpp"
 #include "sim/localisation.hpp"
@@ -31,6 +33,10 @@ struct DiffDriveConfig {
   OdometryNoiseConfig odometry;
   LocalisationNoiseConfig localisation;
 };
+
+/// The first impossible value of the robot's config, keys as in config/robot.yaml: the
+/// `odometry` and `localisation` maps' first, then positive limits, sizes and rates.
+std::optional<geometry::ConfigViolation> FindConfigViolation(const DiffDriveConfig& config);
 
 /// The simulated robot. The true pose is for sensors and scoring only; a controller sees
 /// T_odom_base(), T_map_base_estimate(), v() and w(), as on a real robot. The world frame is

@@ -51,7 +51,7 @@ struct Lidar::Echo {
 };
 
 Lidar::Lidar(LidarConfig config, std::uint64_t seed) : config_(config), rng_(seed) {
-  assert(!Validate(config_).has_value());
+  assert(!FindConfigViolation(config_).has_value());
 }
 
 Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_lidar,

@@ -33,7 +33,7 @@ class Lidar {
  public:
   using PoseAt = std::function<geometry::Pose2(double t_s)>;
 
-  /// `config` must pass Validate() (asserted).
+  /// `config` must pass FindConfigViolation() (asserted).
   Lidar(LidarConfig config, std::uint64_t seed);
 
   /// A scan from a LiDAR standing still at T_world_lidar; moving obstacles still move

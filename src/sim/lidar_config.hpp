@@ -1,7 +1,8 @@
 #pragma once
 
 #include <optional>
-#include <string>
+
+#include "geometry/config_violation.hpp"
 
 namespace shelfdock::sim {
 
@@ -65,13 +66,9 @@ struct LidarConfig {
   double AngleMax() const { return angle_min_rad + (num_beams - 1) * angle_increment_rad; }
 };
 
-/// The name of the first field holding an impossible value and why, or nullopt when valid.
-struct ConfigError {
-  std::string field;
-  std::string requirement;
-};
-/// The first impossible value of the config, if any (names the key).
-std::optional<ConfigError> Validate(const LidarConfig& config);
+/// The first impossible value of the config, if any, keys as in config/lidar_*.yaml (the
+/// field names).
+std::optional<geometry::ConfigViolation> FindConfigViolation(const LidarConfig& config);
 
 /// A config with every flaw switched off: exact ranges, no dropouts, no footprint, no tilt.
 LidarConfig IdealLidarConfig(LidarConfig config = {});

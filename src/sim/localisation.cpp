@@ -44,4 +44,16 @@ geometry::Pose2 LocalisationError::Apply(const geometry::Pose2& T_map_base_true)
                          geometry::WrapAngle(T_map_base_true.yaw + bias_.yaw + noise_.yaw));
 }
 
+std::optional<geometry::ConfigViolation> FindConfigViolation(const LocalisationNoiseConfig& c) {
+  geometry::ConfigChecker k;
+  k.Check(c.noise_std_m >= 0.0, "noise_std_m", ">= 0 metres");
+  k.Check(c.noise_std_rad >= 0.0, "noise_std_rad", ">= 0 radians");
+  k.Check(c.bias_std_m >= 0.0, "bias_std_m", ">= 0 metres");
+  k.Check(c.bias_std_rad >= 0.0, "bias_std_rad", ">= 0 radians");
+  // Both divide: the bias's decay per step and the refresh period.
+  k.Check(c.bias_time_constant_s > 0.0, "bias_time_constant_s", "> 0 seconds");
+  k.Check(c.update_rate_hz > 0.0, "update_rate_hz", "> 0 Hz");
+  return k.Result();
+}
+
 }  // namespace shelfdock::sim

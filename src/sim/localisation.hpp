@@ -1,8 +1,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <random>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/pose2.hpp"
 
 namespace shelfdock::sim {
@@ -19,6 +21,10 @@ struct LocalisationNoiseConfig {
   double bias_time_constant_s = 20.0;  ///< [s] correlation time of the bias
   double update_rate_hz = 10.0;        ///< [Hz] how often noise and bias are refreshed
 };
+
+/// The first impossible value of the localisation errors (keys as under `localisation` in
+/// config/robot.yaml): no spread is negative, the bias's time constant and the rate are positive.
+std::optional<geometry::ConfigViolation> FindConfigViolation(const LocalisationNoiseConfig& config);
 
 /// The error of the localisation estimate, advanced in time; applied to the true pose.
 class LocalisationError {

@@ -219,4 +219,20 @@ geometry::Pose2 TagInCamera(const geometry::Pose2& T_world_base,
   return (T_world_base * T_base_camera).inverse() * T_world_shelf;
 }
 
+std::optional<geometry::ConfigViolation> FindConfigViolation(const CameraConfig& c) {
+  geometry::ConfigChecker k;
+  k.Nested("", FindConfigViolation(c.camera));  // its keys name their own maps
+  k.Check(c.supersample >= 1 && c.supersample <= 16, "render.supersample", "in 1..16");
+  k.Check(c.blur_sigma_px >= 0.0 && c.blur_sigma_px <= 20.0, "render.blur_sigma_px",
+          "in 0..20 pixels");
+  k.Check(c.noise_std >= 0.0, "render.noise_std", ">= 0 grey levels");
+  k.Check(c.exposure > 0.0, "render.exposure", "> 0");
+  auto grey = [](double level) { return level >= 0.0 && level <= 255.0; };
+  k.Check(grey(c.white_level), "render.white_level", "in 0..255 grey levels");
+  k.Check(grey(c.black_level), "render.black_level", "in 0..255 grey levels");
+  k.Check(grey(c.background_level), "render.background_level", "in 0..255 grey levels");
+  k.Check(c.white_level > c.black_level, "render.white_level", "> black_level");
+  return k.Result();
+}
+
 }  // namespace shelfdock::sim

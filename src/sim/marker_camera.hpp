@@ -1,7 +1,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/gray_image.hpp"
 #include "geometry/pose2.hpp"
 #include "geometry/upward_camera.hpp"
@@ -20,6 +22,11 @@ struct CameraConfig {
   double black_level = 25.0;       ///< [grey levels] black ink at nominal exposure
   double background_level = 90.0;  ///< [grey levels] shelf underside around the label
 };
+
+/// The first impossible value of the camera and its rendering, keys as in config/camera.yaml:
+/// the camera's (`intrinsics.fx_px`, `code.code_size_m`, ...), then the rendering's own under
+/// `render` (grey levels in 0..255, white brighter than black).
+std::optional<geometry::ConfigViolation> FindConfigViolation(const CameraConfig& config);
 
 /// Renders the grey image the camera sees of AprilTag 36h11 code `tag_id` at T_camera_tag
 /// (frames as in geometry::UpwardCamera). The code and its white quiet zone may leave the

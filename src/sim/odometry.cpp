@@ -40,4 +40,14 @@ void WheelOdometry::Update(double true_distance_m, double true_dyaw_rad) {
                                  geometry::WrapAngle(T_odom_base_.yaw + dyaw));
 }
 
+std::optional<geometry::ConfigViolation> FindConfigViolation(const OdometryNoiseConfig& c) {
+  geometry::ConfigChecker k;
+  k.Check(c.wheel_scale_std >= 0.0 && c.wheel_scale_std < 0.1, "wheel_scale_std",
+          "in [0, 0.1) (a fraction, 0.001 = 0.1 %)");
+  k.Check(c.wheel_base_scale_std >= 0.0 && c.wheel_base_scale_std < 0.1, "wheel_base_scale_std",
+          "in [0, 0.1) (a fraction)");
+  k.Check(c.slip_std_m_per_sqrt_m >= 0.0, "slip_std_m_per_sqrt_m", ">= 0 (m per sqrt(m))");
+  return k.Result();
+}
+
 }  // namespace shelfdock::sim

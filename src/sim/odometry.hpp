@@ -1,8 +1,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <random>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/pose2.hpp"
 
 namespace shelfdock::sim {
@@ -18,6 +20,10 @@ struct OdometryNoiseConfig {
   double wheel_base_scale_std = 0.005;   ///< [-] effective track-width error, fixed per run
   double slip_std_m_per_sqrt_m = 0.001;  ///< [m/sqrt(m)] per-wheel slip random walk
 };
+
+/// The first impossible value of the odometry errors (keys as under `odometry` in
+/// config/robot.yaml): scale errors are fractions below 10 %, no spread is negative.
+std::optional<geometry::ConfigViolation> FindConfigViolation(const OdometryNoiseConfig& config);
 
 /// Dead reckoning from simulated wheel encoders. Fed with the TRUE wheel travel of each step;
 /// integrates what the encoders would report. Starts at the identity of the `odom` frame.

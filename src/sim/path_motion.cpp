@@ -59,4 +59,10 @@ geometry::Pose2 PathMotion::PoseAt(double t_s) const {
   return {Point(*this, n - 1).x(), Point(*this, n - 1).y(), 0.0};
 }
 
+std::optional<geometry::ConfigViolation> FindConfigViolation(const PathMotion& m) {
+  geometry::ConfigChecker k;
+  k.Check(m.speed_mps >= 0.0 && m.speed_mps < 10.0, "speed", "in [0, 10) m/s");
+  return k.Result();
+}
+
 }  // namespace shelfdock::sim

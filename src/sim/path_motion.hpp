@@ -1,9 +1,11 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/pose2.hpp"
 
 namespace shelfdock::sim {
@@ -20,5 +22,10 @@ struct PathMotion {
   /// Pose at time t: position on the path, yaw along the direction of travel.
   geometry::Pose2 PoseAt(double t_s) const;
 };
+
+/// The first impossible value of a motion: a speed in [0, 10) m/s. Keys as in scenario files
+/// (`speed`), where a mover's path keys sit beside its other keys; the loader requires the
+/// waypoints, and any closed flag or start offset will do.
+std::optional<geometry::ConfigViolation> FindConfigViolation(const PathMotion& motion);
 
 }  // namespace shelfdock::sim

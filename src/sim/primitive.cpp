@@ -78,4 +78,10 @@ Eigen::Vector2d SurfaceNormal(const Primitive& primitive, const Eigen::Vector2d&
   return n.dot(from - point) >= 0.0 ? n : Eigen::Vector2d(-n);
 }
 
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Material& m) {
+  geometry::ConfigChecker k;  // shiny: either value
+  k.Check(m.reflectivity >= 0.0 && m.reflectivity <= 1.0, "reflectivity", "in [0, 1]");
+  return k.Result();
+}
+
 }  // namespace shelfdock::sim

@@ -1,8 +1,11 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 
 #include <Eigen/Core>
+
+#include "geometry/config_violation.hpp"
 
 namespace shelfdock::sim {
 
@@ -12,6 +15,10 @@ struct Material {
   double reflectivity = 0.6;  ///< [0..1] diffuse reflectance at the LiDAR's wavelength
   bool shiny = false;         ///< specular (polished metal, glossy paint)
 };
+
+/// The first impossible value of a material: reflectivity in [0, 1]. Keys as in scenario files,
+/// where `reflectivity` and `shiny` sit beside the object's other keys.
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Material& material);
 
 /// What a primitive belongs to, so a hit can be traced back to its object (scoring, tests).
 enum class ObjectKind { kShelfLeg, kWall, kBox, kPost, kPerson, kRobot, kFloor };

@@ -1,6 +1,8 @@
 #include "sim/scenario.hpp"
 
+#include <algorithm>
 #include <random>
+#include <string>
 
 namespace shelfdock::sim {
 
@@ -28,6 +30,31 @@ std::optional<geometry::Pose2> Scenario::PresetPose(int shelf_id, std::uint64_t 
   const double dyaw = shelf->preset_offset_yaw_rad * unit(rng);
   const geometry::Pose2& T = shelf->T_map_shelf;
   return geometry::Pose2(T.x + dx, T.y + dy, T.yaw + dyaw);
+}
+
+std::optional<geometry::ConfigViolation> FindConfigViolation(const ScenarioShelf& shelf) {
+  geometry::ConfigChecker k;  // model_name: looked up by the loader; poses: any
+  k.Check(shelf.id >= 0, "id", "given, an integer >= 0 (the code under the shelf)");
+  // PresetPose uses a stated preset as it is: an offset range beside it would be ignored.
+  const bool offset = shelf.preset_offset_xy_m != 0.0 || shelf.preset_offset_yaw_rad != 0.0;
+  k.Check(!(shelf.T_map_shelf_preset && offset), "preset_offset", "absent when preset is given");
+  k.Check(shelf.preset_offset_xy_m >= 0.0, "preset_offset.xy_m", ">= 0 (metres)");
+  k.Check(shelf.preset_offset_yaw_rad >= 0.0, "preset_offset.yaw_rad", ">= 0 (radians)");
+  return k.Result();
+}
+
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Scenario& s) {
+  geometry::ConfigChecker k;  // name and robot_start: any
+  for (auto it = s.shelves.begin(); it != s.shelves.end(); ++it) {
+    const std::string where = "shelves[" + std::to_string(it - s.shelves.begin()) + "]";
+    const bool unique = std::none_of(
+        s.shelves.begin(), it, [&](const ScenarioShelf& earlier) { return earlier.id == it->id; });
+    k.Check(unique, where + ".id", "unique among the shelves");
+    k.Nested(where, FindConfigViolation(*it));
+  }
+  k.Check(s.target_shelf_id == -1 || s.FindShelf(s.target_shelf_id) != nullptr, "target_shelf",
+          "the id of a shelf in this scenario");
+  return k.Result();
 }
 
 }  // namespace shelfdock::sim

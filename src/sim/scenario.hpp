@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/pose2.hpp"
 #include "sim/world.hpp"
 
@@ -35,5 +36,13 @@ struct Scenario {
   /// nullopt for unknown ids.
   std::optional<geometry::Pose2> PresetPose(int shelf_id, std::uint64_t seed) const;
 };
+
+/// The first impossible value of a shelf's entry (keys as in a scenario file's `shelves[i]`):
+/// an id >= 0, offsets >= 0, and no offset range next to a stated preset (it would be ignored).
+std::optional<geometry::ConfigViolation> FindConfigViolation(const ScenarioShelf& shelf);
+/// The shelves' rules under `shelves[i].`, ids unique among them, and a target that is one of
+/// them. The world's objects are checked one by one as they are built (their own functions):
+/// the world does not keep which entry of the file each came from.
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Scenario& scenario);
 
 }  // namespace shelfdock::sim

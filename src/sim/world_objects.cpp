@@ -130,4 +130,48 @@ void AppendPerson(const Person& person, double t_s, int index, std::vector<Primi
   }
 }
 
+std::optional<geometry::ConfigViolation> FindConfigViolation(const ShelfInstance& shelf) {
+  geometry::ConfigChecker k;  // id and pose: any; the model: checked with the models file
+  const double r = shelf.leg_material.reflectivity;  // the file's `leg_reflectivity`
+  k.Check(r >= 0.0 && r <= 1.0, "leg_reflectivity", "in [0, 1]");
+  return k.Result();
+}
+
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Wall& wall) {
+  geometry::ConfigChecker k;  // points: the loader requires two or more; closed: either value
+  k.Check(wall.height_m > 0.0, "height", "> 0 (metres)");
+  k.Nested("", FindConfigViolation(wall.material));
+  return k.Result();
+}
+
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Box& box) {
+  geometry::ConfigChecker k;
+  k.Check(box.length_m > 0.0, "length", "> 0 (metres)");
+  k.Check(box.width_m > 0.0, "width", "> 0 (metres)");
+  k.Check(box.height_m > 0.0, "height", "> 0 (metres)");
+  k.Nested("", FindConfigViolation(box.material));
+  return k.Result();
+}
+
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Person& person) {
+  geometry::ConfigChecker k;
+  k.Nested("", FindConfigViolation(person.path));
+  k.Check(person.leg_radius_m > 0.0, "leg_radius", "> 0 (metres)");
+  k.Check(person.leg_spacing_m >= 0.0, "leg_spacing", ">= 0 (metres)");
+  k.Check(person.stride_m >= 0.0, "stride", ">= 0 (metres)");
+  k.Check(person.height_m > 0.0, "height", "> 0 (metres)");
+  k.Nested("", FindConfigViolation(person.material));
+  return k.Result();
+}
+
+std::optional<geometry::ConfigViolation> FindConfigViolation(const MovingRobot& robot) {
+  geometry::ConfigChecker k;
+  k.Nested("", FindConfigViolation(robot.path));
+  k.Check(robot.length_m > 0.0, "length", "> 0 (metres)");
+  k.Check(robot.width_m > 0.0, "width", "> 0 (metres)");
+  k.Check(robot.height_m > 0.0, "height", "> 0 (metres)");
+  k.Nested("", FindConfigViolation(robot.material));
+  return k.Result();
+}
+
 }  // namespace shelfdock::sim

@@ -1,10 +1,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "geometry/config_violation.hpp"
 #include "geometry/pose2.hpp"
 #include "geometry/shelf_model.hpp"
 #include "sim/path_motion.hpp"
@@ -81,6 +83,16 @@ struct MovingRobot {
 
   Box BoxAt(double t_s) const;
 };
+
+/// The first impossible value of an object, keys as in a scenario file's entry for it (the
+/// material's and the path's keys beside the object's own: `reflectivity`, `speed`): positive
+/// sizes and heights, reflectivities in [0, 1]. A shelf's model is checked with its own file
+/// (geometry::FindConfigViolation), a wall's points by the loader (at least two).
+std::optional<geometry::ConfigViolation> FindConfigViolation(const ShelfInstance& shelf);
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Wall& wall);
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Box& box);
+std::optional<geometry::ConfigViolation> FindConfigViolation(const Person& person);
+std::optional<geometry::ConfigViolation> FindConfigViolation(const MovingRobot& robot);
 
 /// Primitive generation, one function per object kind. `index` tags the primitives.
 void AppendShelfLegs(const ShelfInstance& shelf, std::vector<Primitive>* out);

@@ -22,7 +22,7 @@ TEST(HarshLidarTest, SetsEveryFlaw) {
   EXPECT_NEAR(harsh.tilt_pitch_rad, M_PI / 180.0, 1e-15);
   EXPECT_GT(harsh.beam_divergence_rad, sim::LidarConfig{}.beam_divergence_rad);
   EXPECT_GT(harsh.dropout_probability, sim::LidarConfig{}.dropout_probability);
-  EXPECT_FALSE(sim::Validate(harsh).has_value());
+  EXPECT_FALSE(sim::FindConfigViolation(harsh).has_value());
   // Geometry is the nominal sensor's.
   EXPECT_EQ(harsh.num_beams, nominal.num_beams);
 }
