@@ -45,16 +45,22 @@ TEST(ShelfEvidenceTest, EmptyFourthCornerIsSeenThroughAndRejected) {
   EXPECT_GE(r.stats.rejected.leg_seen_through, 1);
 }
 
-TEST(ShelfEvidenceTest, FourthCornerBehindABoxIsExcused) {
-  // The same posts with a 0.2 m box 0.3 m in front of the empty back corner (toward the
-  // sensor, so under the shelf): the corner is hidden, not contradicted, and the box explains
-  // it, so it does not count against the free space: the three legs make a shelf.
-  const auto models = PaperModels();
-  const geometry::Pose2 T_shelf(2.2, 0.1, 0.3);
+// The same posts with a 0.2 m box 0.3 m in front of the empty back corner (toward the sensor,
+// so under the shelf): the corner is hidden, not contradicted.
+sim::World ThreeCornerPostsAndABox(const geometry::Pose2& T_shelf) {
   sim::World world = ThreeCornerPosts(T_shelf);
-  const Eigen::Vector2d hidden = T_shelf * models[3].LegCentres()[kEmptyCorner];
+  const Eigen::Vector2d hidden = T_shelf * PaperModels()[3].LegCentres()[kEmptyCorner];
   const Eigen::Vector2d box = hidden - 0.3 * hidden.normalized();
   world.AddBox({geometry::Pose2(box.x(), box.y(), 0.0), 0.2, 0.2});
+  return world;
+}
+
+TEST(ShelfEvidenceTest, FourthCornerBehindABoxIsExcused) {
+  // With a preset the box explains the hidden corner, so it does not count against the free
+  // space either: the three legs make a shelf.
+  const auto models = PaperModels();
+  const geometry::Pose2 T_shelf(2.2, 0.1, 0.3);
+  sim::World world = ThreeCornerPostsAndABox(T_shelf);
   const Detector detector(models);
   const DetectionResult r = detector.Detect(SimScan(world, {}, 3), T_shelf);
   ASSERT_FALSE(r.detections.empty());
@@ -69,10 +75,7 @@ TEST(ShelfEvidenceTest, WithoutAPresetAFourthCornerBehindSomethingElseVouchesFor
   // box in front of the fourth corner are what clutter makes. Not returned, and counted.
   const auto models = PaperModels();
   const geometry::Pose2 T_shelf(2.2, 0.1, 0.3);
-  sim::World world = ThreeCornerPosts(T_shelf);
-  const Eigen::Vector2d hidden = T_shelf * models[3].LegCentres()[kEmptyCorner];
-  const Eigen::Vector2d box = hidden - 0.3 * hidden.normalized();
-  world.AddBox({geometry::Pose2(box.x(), box.y(), 0.0), 0.2, 0.2});
+  sim::World world = ThreeCornerPostsAndABox(T_shelf);
   const Detector detector(models);
   const DetectionResult r = detector.Detect(SimScan(world, {}, 3));
   EXPECT_TRUE(r.detections.empty());
