@@ -51,8 +51,9 @@ void Docker::GuideByCode(const Observations& obs, Command* cmd) {
   const Pose2 diff = T_odom_goal_.inverse() * goal;
   if (std::hypot(diff.x, diff.y) <= g.correct_xy_m && std::abs(diff.yaw) <= g.correct_yaw_rad)
     return;
-  // A short Bezier straight onto the corrected goal: no final straight is left at this point,
-  // and the curvature bound is the tracker's (slow speed), not the approach's.
+  // The path bent onto the corrected goal (BendToGoal); failing that, a short Bezier straight
+  // onto it: no final straight is left at this point. Either way the curvature bound is the
+  // tracker's at slow speed, not the approach's.
   PlannerConfig planner = config_.planner;
   planner.min_final_straight_m = 0.0;
   planner.final_straight_m = std::min(planner.final_straight_m, 0.5 * remaining_m);
