@@ -148,7 +148,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   // map vouches for that leg, and in clutter three posts and anything in front of the fourth
   // corner make such a triangle (eval-layouts, 2000 clutter scenes: 56 such detections of 600
   // scenes without a preset, 20 with this rule). With a preset the map vouches for the shelf.
-  if (!in.T_lidar_preset && set.count == 3 && ev.legs_seen < 4 && ev.legs_hidden_by_other > 0) {
+  if (!in.T_lidar_preset && set.count == 3 && ev.legs_hidden_by_other > 0) {
     rec.verdict = Verdict::kHiddenLegNoPreset;
     return h;
   }

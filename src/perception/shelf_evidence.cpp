@@ -106,6 +106,9 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   std::array<double, 4> width_errors{};
   double beam_sum = 0.0;
   int width_count = 0;
+  auto listed = [](const std::vector<int>& v, int i) {
+    return std::find(v.begin(), v.end(), i) != v.end();
+  };
   // Its own legs first: an occluded leg may be hidden by one of them (seen along a side).
   for (int cand : corner_candidate) {
     if (cand >= 0) own_spans.push_back(pre.candidates[cand].span);
@@ -127,23 +130,12 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       ++width_count;
       continue;
     }
-    const Eigen::Vector2d leg = T_lidar_shelf * corners[k];
-    LegLook look = LookAtLeg(leg, model.leg, pre, alpha, config);
+    LegLook look = LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, config);
     ev.legs[k] = look.view;
-    if (look.view == LegView::kUnobserved && !pre.points.empty()) {
-      // The points are in beam order: the first and last bound the angles the scan covers.
-      const double bearing = std::atan2(leg.y(), leg.x());
-      const double lo = pre.points.front().angle, hi = pre.points.back().angle;
-      if (geometry::AngleDiff(bearing, lo) < 0.0 || geometry::AngleDiff(hi, bearing) < 0.0) {
-        ++ev.legs_out_of_view;
-      }
-    }
     if (look.view == LegView::kOccluded) {
-      for (int span : look.occluder_spans) {
-        if (std::find(own_spans.begin(), own_spans.end(), span) == own_spans.end()) {
-          ++ev.legs_hidden_by_other;
-          break;
-        }
+      if (std::any_of(look.occluder_spans.begin(), look.occluder_spans.end(),
+                      [&](int span) { return !listed(own_spans, span); })) {
+        ++ev.legs_hidden_by_other;
       }
       // The object hiding a leg may stand under the shelf (a box in front of a back leg): it
       // explains the missing leg, so it does not count against the free space either.
@@ -185,9 +177,6 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   const double hy = 0.5 * model.width_m - config.interior_margin_m;
   const double reach = 0.5 * model.Diagonal();
   const double leg_extent = model.leg.Extent();
-  auto listed = [](const std::vector<int>& v, int i) {
-    return std::find(v.begin(), v.end(), i) != v.end();
-  };
   for (std::size_t s = 0; s < pre.spans.size(); ++s) {
     const ClusterSpan& span = pre.spans[s];
     if ((span.centroid - T_lidar_shelf.translation()).norm() > reach + span.extent_m) continue;

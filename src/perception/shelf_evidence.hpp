@@ -30,8 +30,6 @@ struct ShelfEvidence {
   int legs_seen_through = 0;                          ///< kSeenThrough
   /// Of legs_occluded, those hidden (also) by something that is not one of its own legs.
   int legs_hidden_by_other = 0;
-  /// Of the unobserved legs, those outside the scan's field of view (no beam can reach them).
-  int legs_out_of_view = 0;
   int interior_points = 0;       ///< points inside the footprint shrunk by interior_margin_m,
                                  ///< not counting the occluders that hide one of its legs
   int interior_leg_points = 0;   ///< of interior_points, those of foreign legs
