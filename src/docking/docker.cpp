@@ -115,10 +115,7 @@ bool Docker::BendToGoal(const Pose2& T_odom_base, const Pose2& goal, double max_
   if (!follower_.has_path()) return false;
   const double s_from = follower_.path().Project(T_odom_base).s;
   const std::optional<Path> bent = BendPathToGoal(follower_.path(), s_from, goal);
-  if (!bent) return false;
-  for (const PathPoint& p : bent->points) {
-    if (p.s > s_from && std::abs(p.curvature) > max_curvature_1pm) return false;
-  }
+  if (!bent || bent->MaxAbsCurvature(s_from) > max_curvature_1pm) return false;
   if (!CheckPathAgainstLegs(*bent, LegDiscs(task_.model, tracker_.estimate()), config_.safety).ok) {
     return false;
   }

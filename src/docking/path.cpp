@@ -8,9 +8,11 @@
 
 namespace shelfdock::docking {
 
-double Path::MaxAbsCurvature() const {
+double Path::MaxAbsCurvature(double after_s) const {
   double k = 0.0;
-  for (const PathPoint& p : points) k = std::max(k, std::abs(p.curvature));
+  for (const PathPoint& p : points) {
+    if (p.s > after_s) k = std::max(k, std::abs(p.curvature));
+  }
   return k;
 }
 

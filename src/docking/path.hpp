@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "geometry/pose2.hpp"
@@ -29,7 +30,8 @@ struct Path {
   bool empty() const { return points.empty(); }
   double Length() const { return points.empty() ? 0.0 : points.back().s; }
   const geometry::Pose2& Goal() const { return points.back().pose; }
-  double MaxAbsCurvature() const;
+  /// Largest |curvature| of the points beyond arc length `after_s` (all points by default).
+  double MaxAbsCurvature(double after_s = -std::numeric_limits<double>::infinity()) const;
 
   /// Projects `pose` onto the path, searching segments from `hint` onward (progress is monotone
   /// while tracking). Past the end the goal's tangent line is used, so s keeps growing.

@@ -54,10 +54,7 @@ TEST(PathBend, ASmallMoveCloseToTheGoalBendsGently) {
   const double span = 0.3;
   const auto bent = BendPathToGoal(path, path.Length() - span, Pose2(0.0, 0.002, 0.002));
   ASSERT_TRUE(bent);
-  double k_max = 0.0;
-  for (const PathPoint& p : bent->points) {
-    if (p.s > path.Length() - span) k_max = std::max(k_max, std::abs(p.curvature));
-  }
+  const double k_max = bent->MaxAbsCurvature(path.Length() - span);
   EXPECT_LT(k_max, 6.0 * 0.002 / (span * span) + 1.5 * 0.002 / span + 0.02);
   EXPECT_GT(k_max, 0.05);  // it did bend
 }
