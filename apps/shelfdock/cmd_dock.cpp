@@ -191,13 +191,12 @@ int RunEvalDocking(const DockOptions& opt) {
     const eval::MethodSummary s = eval::Summarise(runs);
     // The runs behind the tail of the before-check figures, by seed, so each can be replayed
     // with `dock --seed` (its events say what the robot saw).
+    std::vector<const eval::DockingRun*> valid;
+    for (const auto& r : runs) {
+      if (r.error_before_check.valid) valid.push_back(&r);
+    }
     nlohmann::json worst = nlohmann::json::object();
-    for (const char* axis : {"xy", "yaw"}) {
-      std::vector<const eval::DockingRun*> valid;
-      for (const auto& r : runs) {
-        if (r.error_before_check.valid) valid.push_back(&r);
-      }
-      const bool yaw = std::string(axis) == "yaw";
+    for (const bool yaw : {false, true}) {
       auto size = [yaw](const eval::DockingRun* r) {
         const eval::PoseError& e = r->error_before_check;
         return yaw ? std::abs(e.yaw) : std::hypot(e.x, e.y);
@@ -210,7 +209,7 @@ int RunEvalDocking(const DockOptions& opt) {
         const eval::PoseError& e = valid[k]->error_before_check;
         list.push_back({{"seed", valid[k]->seed}, {"x_m", e.x}, {"y_m", e.y}, {"yaw_rad", e.yaw}});
       }
-      worst[axis] = list;
+      worst[yaw ? "yaw" : "xy"] = list;
     }
     mean_time[method == docking::Method::kContinuous ? 0 : 1] = s.mean_time_s;
     nlohmann::json summary = SummaryJson(s);

@@ -93,9 +93,7 @@ void YamlFields::Require(bool ok, const std::string& key, const std::string& req
 }
 
 void YamlFields::Reject(const std::optional<geometry::ConfigViolation>& violation) const {
-  if (violation) {
-    throw InputError(file_, KeyPath(violation->key), "must be " + violation->requirement);
-  }
+  if (violation) Require(false, violation->key, violation->requirement);
 }
 
 void YamlFields::RejectUnknown() const {
