@@ -22,7 +22,6 @@ void ShelfTracker::Restart(const geometry::Pose2& T_odom_shelf, const Eigen::Mat
   cov_.setZero();
   cov_.topLeftCorner<3, 3>() = covariance;
   cov_(3, 3) = config_.drift_rate_sigma_yaw_per_m * config_.drift_rate_sigma_yaw_per_m;
-  detections_ = 1;
   consecutive_rejects_ = 0;
 }
 
@@ -42,6 +41,7 @@ TrackUpdate ShelfTracker::Add(const geometry::Pose2& T_odom_shelf,
   const Eigen::Matrix3d R = Floor(covariance);
   if (detections_ == 0) {
     Restart(z, R);
+    detections_ = 1;
     return TrackUpdate::kInitialised;
   }
   // A rectangle's heading is ambiguous by pi: take the branch nearest the estimate.
@@ -60,6 +60,7 @@ TrackUpdate ShelfTracker::Add(const geometry::Pose2& T_odom_shelf,
     last_rejected_ = z;
     if (consecutive_rejects_ >= config_.reinit_after_rejects) {
       Restart(z, R);
+      detections_ = 1;
       return TrackUpdate::kReinitialised;
     }
     return TrackUpdate::kRejected;

@@ -51,7 +51,8 @@ class ShelfTracker {
 
  private:
   Eigen::Matrix3d Floor(const Eigen::Matrix3d& covariance) const;
-  // Restarts the state at a detection: its pose and covariance, the drift rate unknown again.
+  // Restarts the state at a pose and covariance (a prior or a detection; the caller sets the
+  // detection count), the drift rate unknown again.
   void Restart(const geometry::Pose2& T_odom_shelf, const Eigen::Matrix3d& covariance);
 
   ShelfTrackerConfig config_;
