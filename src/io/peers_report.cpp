@@ -1,7 +1,6 @@
 #include "io/peers_report.hpp"
 
 #include <cmath>
-#include <utility>
 
 #include "io/report_format.hpp"
 
@@ -22,13 +21,21 @@ const eval::PeerRow* Reference(const std::vector<eval::PeerRow>& rows, const std
   return nullptr;
 }
 
-/// The ICP rows with shelfdock's row of the same set.
-std::vector<std::pair<const eval::PeerRow*, const eval::PeerRow*>> IcpPairs(
-    const std::vector<eval::PeerRow>& rows) {
-  std::vector<std::pair<const eval::PeerRow*, const eval::PeerRow*>> out;
+/// An ICP row, shelfdock's row of the same set, and how many times faster shelfdock is there
+/// (median time per scan).
+struct IcpPair {
+  const eval::PeerRow* icp;
+  const eval::PeerRow* ref;
+  double ratio;
+};
+
+std::vector<IcpPair> IcpPairs(const std::vector<eval::PeerRow>& rows) {
+  std::vector<IcpPair> out;
   for (const auto& r : rows) {
     if (r.method != eval::PeerMethod::kIcp) continue;
-    if (const eval::PeerRow* ref = Reference(rows, r.set)) out.emplace_back(&r, ref);
+    if (const eval::PeerRow* ref = Reference(rows, r.set)) {
+      out.push_back({&r, ref, r.time_s.p50 / ref->time_s.p50});
+    }
   }
   return out;
 }
@@ -64,8 +71,7 @@ std::vector<std::string> IcpTargetLines(const std::vector<eval::PeerRow>& rows) 
   const auto pairs = IcpPairs(rows);
   if (pairs.empty()) return {kIcpNotBuilt};
   std::vector<std::string> out;
-  for (const auto& [icp, ref] : pairs) {
-    const double ratio = icp->time_s.p50 / ref->time_s.p50;
+  for (const auto& [icp, ref, ratio] : pairs) {
     const std::string verdict =
         ratio >= kIcpSpeedTarget
             ? "met"
@@ -126,8 +132,7 @@ nlohmann::json PeersJson(const std::vector<eval::PeerRow>& rows,
                     {"exhaustive_time_s", Json(r.exhaustive_time_s)}});
   }
   nlohmann::json icp_sets = nlohmann::json::array();
-  for (const auto& [icp, ref] : IcpPairs(rows)) {
-    const double ratio = icp->time_s.p50 / ref->time_s.p50;
+  for (const auto& [icp, ref, ratio] : IcpPairs(rows)) {
     icp_sets.push_back(
         {{"set", icp->set}, {"time_ratio", Json(ratio)}, {"met", ratio >= kIcpSpeedTarget}});
   }
