@@ -157,9 +157,10 @@ struct DockingConfig {
   /// robot about 0.5 m before the goal), keep measuring the shelf from the two far legs
   /// (perception::MeasureKnownLegs) down to lidar_cutoff_m instead of driving on odometry alone.
   /// Odometry's heading drift over that last half metre was most of the heading error the LiDAR
-  /// left for the code check (paper set-up, 200 runs: p99 7.0 mrad without, 4.2 with). It was
-  /// off while re-plans that close in could fail and leave the robot on a stale path; the goal
-  /// now moves by bending the path (path_bend.hpp), which does not fail there.
+  /// left for the code check (paper set-up, seeds 1000-1199: p99 7.0 mrad without it, 4.2 with
+  /// it, the path bend and the learnt drift rate; README, Docking). It was off while re-plans
+  /// that close in could fail and leave the robot on a stale path; the goal now moves by
+  /// bending the path (path_bend.hpp), which does not fail there.
   bool two_leg_tracking = true;
   double leg_min_range_m = 0.15;     ///< [m] legs nearer the LiDAR than this are not trusted
   double leg_max_bearing_rad = 2.2;  ///< [rad] legs beyond this bearing are not trusted
