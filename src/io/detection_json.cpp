@@ -54,6 +54,7 @@ nlohmann::json DetectionStatsToJson(const perception::DetectionStats& s) {
           {"leg_sets", s.leg_sets},
           {"model_pairs", s.model_pairs},
           {"hypotheses", s.hypotheses},
+          {"range_noise_m", s.range_noise_m},
           {"rejected",
            {{"fit", s.rejected.fit},
             {"model", s.rejected.model},

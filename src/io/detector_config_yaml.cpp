@@ -15,6 +15,9 @@ void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
   f.Read("leg_extent_margin_m", c.leg_extent_margin_m);
   f.Read("min_points", c.min_points);
   f.Read("min_point_fraction", c.min_point_fraction);
+  f.Read("split_max_extra_m", c.split_max_extra_m);
+  f.Read("split_min_step_m", c.split_min_step_m);
+  f.Read("split_noise_steps", c.split_noise_steps);
   f.RejectUnknown();
 }
 
@@ -67,6 +70,8 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("occluded_credit", c.occluded_credit);
   f.Read("unobserved_credit", c.unobserved_credit);
   f.Read("fit_scale_m", c.fit_scale_m);
+  f.Read("fit_reference_sigma_m", c.fit_reference_sigma_m);
+  f.Read("max_fit_tolerance_factor", c.max_fit_tolerance_factor);
   f.Read("interior_scale_points", c.interior_scale_points);
   f.Read("foreign_leg_points", c.foreign_leg_points);
   f.Read("object_point_weight", c.object_point_weight);

@@ -16,6 +16,9 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(p.trailing_min_jump_m >= 0.0, "preprocess.trailing_min_jump_m", ">= 0");
   k.Check(p.leg_extent_margin_m >= 0.0, "preprocess.leg_extent_margin_m", ">= 0");
   k.Check(p.min_points >= 1, "preprocess.min_points", ">= 1");
+  k.Check(p.split_max_extra_m >= 0.0, "preprocess.split_max_extra_m", ">= 0 (0: never split)");
+  k.Check(p.split_min_step_m > 0.0, "preprocess.split_min_step_m", "> 0");
+  k.Check(p.split_noise_steps >= 0.0, "preprocess.split_noise_steps", ">= 0");
   k.Check(p.min_point_fraction >= 0.0 && p.min_point_fraction <= 1.0,
           "preprocess.min_point_fraction", "in [0, 1]");
 
@@ -61,6 +64,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.unobserved_credit >= 0.0 && e.unobserved_credit <= 1.0, "evidence.unobserved_credit",
           "in [0, 1]");
   k.Check(e.fit_scale_m > 0.0, "evidence.fit_scale_m", "> 0");
+  k.Check(e.fit_reference_sigma_m > 0.0, "evidence.fit_reference_sigma_m", "> 0");
+  k.Check(e.max_fit_tolerance_factor >= 1.0, "evidence.max_fit_tolerance_factor", ">= 1");
   k.Check(e.interior_scale_points > 0.0, "evidence.interior_scale_points", "> 0");
   k.Check(e.foreign_leg_points >= 0.0, "evidence.foreign_leg_points", ">= 0");
   k.Check(e.object_point_weight >= 0.0, "evidence.object_point_weight", ">= 0");

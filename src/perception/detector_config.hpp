@@ -20,6 +20,12 @@ struct PreprocessConfig {
   double leg_extent_margin_m = 0.04;     ///< [m] a leg cluster may exceed the leg diagonal by this
   int min_points = 1;                    ///< [-] fewest points of a leg cluster at any range
   double min_point_fraction = 0.3;       ///< [-] of the beams expected across the smallest leg
+  double split_max_extra_m = 0.25;  ///< [m] a cluster up to this much wider than a leg is split
+                                    ///< at its strongest depth step (a leg with something
+                                    ///< touching it); 0: never split
+  double split_min_step_m = 0.03;   ///< [m] smallest depth step split at
+  double split_noise_steps = 3.0;   ///< [-] and at least this many times the scan's range noise
+                                    ///< (times sqrt 2: a step is a difference of two ranges)
 };
 
 /// Paper 3.2: pruned rectangle / right-triangle search over cluster centres.
@@ -82,6 +88,11 @@ struct EvidenceConfig {
   double occluded_credit = 0.75;         ///< [-] a hidden leg counts this much of a seen one
   double unobserved_credit = 0.5;        ///< [-] a leg no beam reaches counts this much
   double fit_scale_m = 0.03;             ///< [m] err_sum that halves the confidence
+  double fit_reference_sigma_m = 0.012;  ///< [m] leg-centre error fit_scale_m and the 3-leg
+                                         ///< err_sum bounds are set for; a hypothesis whose
+                                         ///< farthest leg is known less well (noisy ranges,
+                                         ///< wide beam spacing) gets them scaled up
+  double max_fit_tolerance_factor = 1.5;  ///< [-] cap on that scaling
   double interior_scale_points = 4.0;    ///< [-] points inside the footprint that halve it
   double foreign_leg_points = 6.0;       ///< [-] a leg-sized cluster inside counts as this many
   double object_point_weight = 0.25;     ///< [-] weight of an interior point of a larger object

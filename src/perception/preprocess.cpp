@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "perception/depth_step.hpp"
+#include "perception/range_noise.hpp"
+
 namespace shelfdock::perception {
 
 std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan) {
@@ -152,6 +155,27 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   // Only candidates are copied out (a scan has a few hundred clusters, most of them wall
   // pieces).
   out.spans = ClusterSpans(out.points, angle_increment_rad, config);
+  out.range_noise_m = EstimateRangeNoise(out.points, out.spans).sigma_m;
+  double max_leg_extent = 0.0;
+  for (const auto& m : models) max_leg_extent = std::max(max_leg_extent, m.leg.Extent());
+  const double split_step =
+      std::max(config.split_min_step_m, config.split_noise_steps * std::sqrt(2.0) * out.range_noise_m);
+  // The points of [begin, end) as a candidate of span si, when they fit a leg.
+  auto add_candidate = [&](std::size_t begin, std::size_t end, int si, std::size_t min_points) {
+    if (end - begin < min_points) return false;
+    Cluster c;
+    c.points.assign(out.points.begin() + static_cast<std::ptrdiff_t>(begin),
+                    out.points.begin() + static_cast<std::ptrdiff_t>(end));
+    for (const ScanPoint& q : c.points) {
+      c.centroid += q.p;
+      c.extent_m = std::max(c.extent_m, (q.p - c.points.front().p).norm());
+    }
+    c.centroid /= static_cast<double>(c.points.size());
+    if (!FitsLegSize(c, angle_increment_rad, models, config)) return false;
+    c.span = si;
+    out.candidates.push_back(std::move(c));
+    return true;
+  };
   for (std::size_t si = 0; si < out.spans.size(); ++si) {
     const ClusterSpan& span = out.spans[si];
     if (T_lidar_preset && (span.centroid - T_lidar_preset->translation()).norm() > roi_radius) {
@@ -159,17 +183,21 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     }
     ++out.clusters;
     out.roi_points += static_cast<int>(span.size());
-    if (!FitsLegSize(span.centroid, span.extent_m, span.size(), angle_increment_rad, models,
-                     config)) {
+    if (FitsLegSize(span.centroid, span.extent_m, span.size(), angle_increment_rad, models,
+                    config)) {
+      add_candidate(span.begin, span.end, static_cast<int>(si), 1);
       continue;
     }
-    Cluster c;
-    c.points.assign(out.points.begin() + static_cast<std::ptrdiff_t>(span.begin),
-                    out.points.begin() + static_cast<std::ptrdiff_t>(span.end));
-    c.centroid = span.centroid;
-    c.extent_m = span.extent_m;
-    c.span = static_cast<int>(si);
-    out.candidates.push_back(std::move(c));
+    // Too wide for a leg, but not by much: a leg with something touching it (a person's leg,
+    // a box) is cut out at the strongest depth step, when that step stands out of the noise.
+    if (span.extent_m > max_leg_extent + config.leg_extent_margin_m + config.split_max_extra_m) {
+      continue;
+    }
+    // A piece needs two points: one return beside a step is as often a mixed point.
+    if (const auto k = StrongestDepthStep(out.points, span, split_step)) {
+      out.split_candidates += add_candidate(span.begin, *k, static_cast<int>(si), 2);
+      out.split_candidates += add_candidate(*k, span.end, static_cast<int>(si), 2);
+    }
   }
   return out;
 }

@@ -46,6 +46,8 @@ struct PreprocessOutput {
   int roi_points = 0;               ///< points in clusters inside the ROI
   int clusters = 0;                 ///< clusters inside the ROI, before screening
   int trailing_removed = 0;         ///< points removed by the Eq. 1 filter
+  double range_noise_m = 0.0;       ///< [m] the scan's range noise (EstimateRangeNoise; 0: unknown)
+  int split_candidates = 0;         ///< candidates cut from wider clusters at a depth step
 };
 
 /// Ranges to points, skipping NaN, infinite, zero and out-of-[range_min, range_max] returns.

@@ -130,8 +130,15 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       ++width_count;
       continue;
     }
-    LegLook look = LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, config);
+    const Eigen::Vector2d leg = T_lidar_shelf * corners[k];
+    LegLook look = LookAtLeg(leg, model.leg, pre, alpha, config);
     ev.legs[k] = look.view;
+    if (look.view == LegView::kUnobserved && !pre.points.empty()) {
+      const double a0 = std::min(pre.points.front().angle, pre.points.back().angle);
+      const double a1 = std::max(pre.points.front().angle, pre.points.back().angle);
+      const double bearing = std::atan2(leg.y(), leg.x());
+      if (bearing > a0 && bearing < a1) ++ev.legs_unobserved_in_view;
+    }
     if (look.view == LegView::kOccluded) {
       if (std::any_of(look.occluder_spans.begin(), look.occluder_spans.end(),
                       [&](int span) { return !listed(own_spans, span); })) {

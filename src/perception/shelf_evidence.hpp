@@ -30,6 +30,9 @@ struct ShelfEvidence {
   int legs_seen_through = 0;                          ///< kSeenThrough
   /// Of legs_occluded, those hidden (also) by something that is not one of its own legs.
   int legs_hidden_by_other = 0;
+  /// Of the unobserved legs, those whose bearing lies inside the scan's field of view (between
+  /// its first and last return): beams looked there and none came back near the leg.
+  int legs_unobserved_in_view = 0;
   int interior_points = 0;       ///< points inside the footprint shrunk by interior_margin_m,
                                  ///< not counting the occluders that hide one of its legs
   int interior_leg_points = 0;   ///< of interior_points, those of foreign legs
