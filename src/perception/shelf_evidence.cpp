@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "geometry/angle.hpp"
 
@@ -37,30 +38,67 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
   const double half_leg = 0.5 * std::min(model.length_m, model.width_m);
   const double wide = std::atan2(half_leg, range) + 0.5 * alpha;
   const double narrow = std::atan2(half_leg - config.leg_position_tolerance_m, range);
-  int present = 0, through = 0;
+  int present = 0;
   // Returns that fall well inside the silhouette: when the leg is far or thin there may be only
   // one, and then one beam through it is all the evidence the scan can give.
   int narrow_returns = 0;
+  std::vector<std::size_t> beyond;  // narrow returns well beyond the leg
+  std::size_t first = pre.points.size(), last = 0;
+  int wide_returns = 0;
   for (std::size_t i = 0; i < pre.points.size(); ++i) {
     const ScanPoint& q = pre.points[i];
     const double off = std::abs(geometry::AngleDiff(q.angle, bearing));
     if (off > wide) continue;
+    ++wide_returns;
+    first = std::min(first, i);
+    last = std::max(last, i);
     if (off <= narrow) ++narrow_returns;
     if (std::abs(q.range - range) <= config.present_margin_m) {
       ++present;
     } else if (q.range < range) {
       look.occluder_spans.push_back(SpanOfPoint(pre.spans, i));
     } else if (q.range > range + config.through_margin_m && off <= narrow) {
-      ++through;
+      beyond.push_back(i);
     }
   }
   if (present > 0) {
     look.view = LegView::kPresent;
-  } else if (!look.occluder_spans.empty()) {
-    look.view = LegView::kOccluded;
-  } else if (through > 0 && through >= std::min(config.min_through_beams, narrow_returns)) {
-    look.view = LegView::kSeenThrough;
+    return look;
   }
+  if (!look.occluder_spans.empty()) {
+    look.view = LegView::kOccluded;
+    return look;
+  }
+  if (beyond.empty()) return look;
+  // A beam that grazes a leg smaller than its footprint returns a mixed range between the leg
+  // and what stands behind: nearer than the background the beams beside the window see. Only a
+  // return as far as that background (the nearer of the two sides) passed through.
+  double background = std::numeric_limits<double>::infinity();
+  if (first > 0) background = pre.points[first - 1].range;
+  if (last + 1 < pre.points.size()) {
+    background = std::min(background, pre.points[last + 1].range);
+  }
+  if (!std::isfinite(background)) background = 0.0;
+  int through = 0;
+  for (std::size_t i : beyond) {
+    through += pre.points[i].range >= background - config.present_margin_m;
+  }
+  // Beams of the window that left no point: no return (a dark or shiny leg can swallow the
+  // pulse) or a mixed point the trailing filter dropped (an edge was there). Either may be the
+  // leg, so then one beam through it is no proof.
+  const ScanPoint& a = pre.points.front();
+  const ScanPoint& b = pre.points.back();
+  int window_beams = wide_returns;
+  if (b.beam != a.beam) {
+    const double inc = (b.angle - a.angle) / static_cast<double>(b.beam - a.beam);
+    const double centre = a.beam + geometry::AngleDiff(bearing, a.angle) / inc;
+    const double half = wide / std::abs(inc);
+    window_beams = static_cast<int>(std::floor(centre + half) - std::ceil(centre - half)) + 1;
+  }
+  const bool silent_beams = window_beams > wide_returns;
+  const int needed = silent_beams ? config.min_through_beams
+                                  : std::min(config.min_through_beams, narrow_returns);
+  if (through > 0 && through >= needed) look.view = LegView::kSeenThrough;
   return look;
 }
 
