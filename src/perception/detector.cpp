@@ -23,6 +23,7 @@ struct Hypothesis {
   HypothesisRecord record;                      // what was found out about it
   std::array<int, 4> clusters{-1, -1, -1, -1};  // leg candidates it is made of
   double weighted_sq = 0.0;                     // the shelf fit's ShelfFitResult::weighted_sq
+  int corners_present = 0;  // corners without a leg cluster where returns stand at the leg's range
 };
 
 // Leg fits depend only on the cluster and the leg section, so they are shared between the
@@ -149,6 +150,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
                                     in.shelf_like_spans, in.angle_increment_rad, config.evidence);
   // The fit term reads err_sum against the scale the legs' measurement allows.
   ev.confidence = ShelfConfidence(ev, refined.err_sum / tolerance, config.evidence);
+  h.corners_present = static_cast<int>(std::count(ev.legs.begin(), ev.legs.end(), LegView::kPresent));
   rec.confidence = ev.confidence;
   rec.legs_visible = ev.legs_seen;
   rec.legs_occluded = ev.legs_occluded;
@@ -308,8 +310,10 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
                            config_,
                            pre.range_noise_m > 0.0 ? pre.range_noise_m
                                                    : config_.leg_fit.range_sigma_m};
-  std::vector<Hypothesis> hypotheses;
-  for (const LegSet& set : sets) {
+  // Scores one leg set against every model its cluster centres pass Eq. 2 for; the returned
+  // hypothesis of the best model, if any. `weighed` tells whether some hypothesis got past the
+  // geometry (fit and Eq. 2) to the scan's evidence.
+  auto score_set = [&](const LegSet& set, bool& weighed) -> std::optional<Hypothesis> {
     std::array<Eigen::Vector2d, 4> rough{};
     for (int i = 0; i < set.count; ++i) rough[i] = centres[set.legs[i]];
     const EdgeSizes edges = MeasureEdges(rough, set.count);
@@ -319,12 +323,14 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     const Eigen::Vector2d long_edge = edges.first_edge_long ? Eigen::Vector2d(rough[1] - rough[0])
                                                             : Eigen::Vector2d(rough[2] - rough[1]);
     const double hint = std::atan2(long_edge.y(), long_edge.x());
-    // The model of a leg set is the one its fitted legs match best (Eq. 2 on the fitted
-    // centres); the evidence, which barely differs between close models, does not choose it.
+    // The model of a leg set is the one its fitted legs match best (the smaller weighted
+    // residual of the shelf fit); the evidence, which barely differs between close models,
+    // does not choose it.
     std::optional<Hypothesis> best;
     for (const ModelPair& pair : pairs) {
       ++stats.hypotheses;
       Hypothesis h = Score(set, models_[pair.model], pair.model, hint, inputs, cache);
+      weighed = weighed || (h.record.verdict != Verdict::kFit && h.record.verdict != Verdict::kModel);
       if (h.record.verdict == Verdict::kReturned) {
         if (!best) {
           best = std::move(h);
@@ -335,6 +341,51 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       }
       Count(h.record.verdict, stats.rejected);
       if (explain) result.hypotheses.push_back(std::move(h.record));
+    }
+    return best;
+  };
+  std::vector<Hypothesis> hypotheses;
+  for (const LegSet& set : sets) {
+    bool weighed = false;
+    std::optional<Hypothesis> best = score_set(set, weighed);
+    // One leg of four may be wrong (a mixed echo behind a far leg, a post beside a corner) and
+    // spoil the fit or Eq. 2 for all four; the search only offers the three-leg sets of corners
+    // without a fourth leg, so a four-leg set that yields nothing gets its three-leg subsets
+    // (in cyclic order, so the corner opposite the dropped leg stays in the middle). A subset
+    // counts only when the dropped leg's returns still stand at its corner's range (a leg
+    // measured badly); a cluster in front of the corner or beside it was something else, and
+    // in clutter four posts near a rectangle would otherwise pass as three legs and a hidden
+    // fourth. Only a set the geometry failed gets them: when the scan's evidence spoke against
+    // the four legs, it speaks against their shelf with one leg fewer too. And only with a
+    // preset: without the map's word, four posts a few centimetres off a rectangle are as
+    // likely as a shelf with one leg measured badly. The most confident subset stands for the
+    // set.
+    if (!best && !weighed && set.count == 4 && T_lidar_preset) {
+      for (int k = 0; k < 4; ++k) {
+        const LegSet sub{{set.legs[(k + 1) % 4], set.legs[(k + 2) % 4], set.legs[(k + 3) % 4], -1},
+                         3};
+        bool sub_weighed = false;
+        std::optional<Hypothesis> h = score_set(sub, sub_weighed);
+        if (!h) continue;
+        if (h->corners_present == 0) {
+          h->record.verdict = Verdict::kLostLegs;
+          Count(h->record.verdict, stats.rejected);
+          if (explain) result.hypotheses.push_back(std::move(h->record));
+          continue;
+        }
+        if (best && h->detection.confidence <= best->detection.confidence) {
+          h->record.verdict = Verdict::kLostLegs;  // a better subset of the same four legs
+          Count(h->record.verdict, stats.rejected);
+          if (explain) result.hypotheses.push_back(std::move(h->record));
+          continue;
+        }
+        if (best) {
+          best->record.verdict = Verdict::kLostLegs;
+          Count(best->record.verdict, stats.rejected);
+          if (explain) result.hypotheses.push_back(std::move(best->record));
+        }
+        best = std::move(h);
+      }
     }
     if (best) hypotheses.push_back(std::move(*best));
   }
