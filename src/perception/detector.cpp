@@ -22,7 +22,7 @@ struct Hypothesis {
   Detection detection;                          // filled when it passed every check
   HypothesisRecord record;                      // what was found out about it
   std::array<int, 4> clusters{-1, -1, -1, -1};  // leg candidates it is made of
-  double weighted_sq = 0.0;                     // the shelf fit's ShelfFitResult::weighted_sq
+  double leg_chi2 = 0.0;                        // LegChiSquare of its fitted legs
   int corners_present = 0;  // corners without a leg cluster where returns stand at the leg's range
 };
 
@@ -106,6 +106,31 @@ void Count(Verdict verdict, RejectionCounts& rejected) {
   }
 }
 
+// Chi-square of fitted legs against the model's corners under the fitted pose, each leg weighed
+// by what its own points can tell: along its beam the range noise over the number of returns on
+// it, across the beam the quantisation of one beam step (step^2 / 12) over the same count; a
+// millimetre floor either way. It compares the models of one leg set: a far leg seen by one
+// noisy return says little about which of two close models (1075x883, 1080x856) it is.
+double LegChiSquare(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
+                    const geometry::ShelfModel& model, const ShelfFitResult& fit,
+                    const ScoreInputs& in) {
+  constexpr double kFloor2 = 1e-6;  // (1 mm)^2
+  const auto corners = model.LegCentres();
+  double chi2 = 0.0;
+  for (int i = 0; i < set.count; ++i) {
+    const Eigen::Vector2d r = legs[i] - fit.T_lidar_shelf * corners[fit.corner_of_leg[i]];
+    const double range = std::max(legs[i].norm(), 0.1);
+    const Eigen::Vector2d u = legs[i] / range;
+    const double n = static_cast<double>(in.pre.candidates[set.legs[i]].points.size());
+    const double step = range * std::abs(in.angle_increment_rad);
+    const double along = r.dot(u);
+    const double across = u.x() * r.y() - u.y() * r.x();
+    chi2 += along * along / (in.range_noise_m * in.range_noise_m / n + kFloor2) +
+            across * across / (step * step / 12.0 / n + kFloor2);
+  }
+  return chi2;
+}
+
 // Fits one points-model pair (3.3 leg centres, 3.4 shelf pose), screens it and weighs the
 // scan's evidence. The record's verdict says whether it stays in the competition for legs
 // (kReturned for now) or why not.
@@ -127,7 +152,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     return h;
   }
   rec.T_lidar_shelf = fit->T_lidar_shelf;
-  h.weighted_sq = fit->weighted_sq;
+  h.leg_chi2 = LegChiSquare(legs, set, model, *fit, in);
   // Eq. 2 again on the fitted (unbiased) leg centres: this is what tells close models apart.
   const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, model_index);
   rec.err_sum = refined.err_sum;
@@ -336,7 +361,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
           best = std::move(h);
           continue;
         }
-        if (h.weighted_sq < best->weighted_sq) std::swap(h, *best);
+        if (h.leg_chi2 < best->leg_chi2) std::swap(h, *best);
         h.record.verdict = Verdict::kModel;  // the same legs fit another model better
       }
       Count(h.record.verdict, stats.rejected);

@@ -145,9 +145,7 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
   dR << -R(1, 0), -R(0, 0), R(0, 0), -R(1, 0);  // d/dyaw of [c -s; s c]
   for (int i = 0; i < count; ++i) {
     const Eigen::Vector2d& ci = corners[corner_of[i]];
-    const Eigen::Vector2d r = legs[i] - out.T_lidar_shelf * ci;
-    sum_sq += r.squaredNorm();
-    out.weighted_sq += (cost.info_sqrt[i] * r).squaredNorm();
+    sum_sq += (legs[i] - out.T_lidar_shelf * ci).squaredNorm();
     J.block<2, 2>(2 * i, 0) = -Eigen::Matrix2d::Identity();
     J.block<2, 1>(2 * i, 2) = -dR * ci;
   }

@@ -16,10 +16,6 @@ struct ShelfFitResult {
   geometry::Pose2 T_lidar_shelf;  ///< centre and heading (x along the long side; pi-ambiguous)
   double cost = 0.0;              ///< [m^2] final robustified cost, 0.5 sum rho(|r|^2)
   double rms_m = 0.0;             ///< [m] RMS distance of the legs from the fitted corners
-  /// [m^2] sum of the squared leg residuals, each split along and across its beam and weighed
-  /// by its std there (scaled so a leg at 1 m weighs 1 along its beam): the fit's chi-square
-  /// up to a constant, which compares models of one leg set fairly.
-  double weighted_sq = 0.0;
   double length_m = 0.0;          ///< [m] mean long edge between the fitted leg centres
   double width_m = 0.0;           ///< [m] mean short edge between the fitted leg centres
   int legs_used = 0;              ///< 3 or 4
