@@ -46,6 +46,11 @@ TEST(DetectorConfigYamlTest, ShippedFileHoldsTheStructDefaults) {
   EXPECT_EQ(read.shelf_fit.max_rms_m, def.shelf_fit.max_rms_m);
   EXPECT_EQ(read.evidence.min_confidence, def.evidence.min_confidence);
   EXPECT_EQ(read.evidence.interior_scale_points, def.evidence.interior_scale_points);
+  EXPECT_EQ(read.preprocess.split_max_extra_m, def.preprocess.split_max_extra_m);
+  EXPECT_EQ(read.preprocess.split_min_step_m, def.preprocess.split_min_step_m);
+  EXPECT_EQ(read.preprocess.split_noise_steps, def.preprocess.split_noise_steps);
+  EXPECT_EQ(read.evidence.fit_reference_sigma_m, def.evidence.fit_reference_sigma_m);
+  EXPECT_EQ(read.evidence.max_fit_tolerance_factor, def.evidence.max_fit_tolerance_factor);
 }
 
 TEST(DetectorConfigYamlTest, ReadsGivenKeysAndKeepsDefaultsForTheRest) {
@@ -57,6 +62,22 @@ TEST(DetectorConfigYamlTest, ReadsGivenKeysAndKeepsDefaultsForTheRest) {
   EXPECT_NO_THROW(ReadDetectorConfig(WriteTemp("empty.yaml", "")));
 }
 
+// The split and fit-tolerance keys are read into their own fields (values unlike the defaults).
+TEST(DetectorConfigYamlTest, ReadsTheSplitAndFitToleranceKeys) {
+  const auto c = ReadDetectorConfig(WriteTemp(
+      "split.yaml",
+      "preprocess: {split_max_extra_m: 0.0, split_min_step_m: 0.045, split_noise_steps: 4.5}\n"
+      "evidence: {fit_reference_sigma_m: 0.02, max_fit_tolerance_factor: 2.5}\n"));
+  EXPECT_DOUBLE_EQ(c.preprocess.split_max_extra_m, 0.0);
+  EXPECT_DOUBLE_EQ(c.preprocess.split_min_step_m, 0.045);
+  EXPECT_DOUBLE_EQ(c.preprocess.split_noise_steps, 4.5);
+  EXPECT_DOUBLE_EQ(c.evidence.fit_reference_sigma_m, 0.02);
+  EXPECT_DOUBLE_EQ(c.evidence.max_fit_tolerance_factor, 2.5);
+  // Untouched keys of the same sections keep their defaults.
+  EXPECT_EQ(c.preprocess.cluster_gap_m, perception::PreprocessConfig{}.cluster_gap_m);
+  EXPECT_EQ(c.evidence.fit_scale_m, perception::EvidenceConfig{}.fit_scale_m);
+}
+
 TEST(DetectorConfigYamlTest, ErrorsNameTheKey) {
   ExpectKeyError("preprocess: {clustre_gap_m: 0.05}\n", "preprocess.clustre_gap_m");
   ExpectKeyError("preproces: {cluster_gap_m: 0.05}\n", "preproces");
@@ -66,6 +87,17 @@ TEST(DetectorConfigYamlTest, ErrorsNameTheKey) {
   ExpectKeyError("evidence: {min_confidence: 1.5}\n", "evidence.min_confidence");
   ExpectKeyError("evidence: {occluded_credit: -0.1}\n", "evidence.occluded_credit");
   ExpectKeyError("model_match: {gamma_sum_m: .nan}\n", "model_match.gamma_sum_m");
+  // The split and fit-tolerance keys: impossible values and wrong types.
+  ExpectKeyError("preprocess: {split_max_extra_m: -0.1}\n", "preprocess.split_max_extra_m");
+  ExpectKeyError("preprocess: {split_min_step_m: 0}\n", "preprocess.split_min_step_m");
+  ExpectKeyError("preprocess: {split_noise_steps: -3}\n", "preprocess.split_noise_steps");
+  ExpectKeyError("evidence: {fit_reference_sigma_m: 0}\n", "evidence.fit_reference_sigma_m");
+  ExpectKeyError("evidence: {max_fit_tolerance_factor: 0.5}\n",
+                 "evidence.max_fit_tolerance_factor");
+  ExpectKeyError("preprocess: {split_min_step_m: three}\n", "preprocess.split_min_step_m");
+  ExpectKeyError("evidence: {max_fit_tolerance_factor: .nan}\n",
+                 "evidence.max_fit_tolerance_factor");
+  ExpectKeyError("preprocess: {split_max_extra: 0.1}\n", "preprocess.split_max_extra");
   EXPECT_THROW(ReadDetectorConfig("/nonexistent/detector.yaml"), InputError);
 }
 

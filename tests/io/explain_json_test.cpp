@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
 #include "../common/paper_models.hpp"
+#include "io/detection_json.hpp"
 #include "io/scan_json.hpp"
 #include "perception/preprocess.hpp"
 
@@ -76,6 +78,35 @@ TEST(ExplainJson, RoiFollowsThePreset) {
   int candidates = 0;
   for (const auto& c : j["clusters"]) candidates += c["candidate"].get<bool>() ? 1 : 0;
   EXPECT_EQ(candidates, result.stats.leg_candidates);
+}
+
+// The line `shelfdock detect` prints (DetectionResultToJson, with and without --explain):
+// "stats" carries the scan's own range noise as "range_noise_m", the detector's value. The
+// example scan was simulated with the WLR-716 defaults (10 mm range noise, 1 mm quantisation):
+// it must lie within 15 % of 10 mm (measured 9.7 mm). A scan with no valid return has no
+// estimate: 0, still written.
+TEST(DetectionJson, StatsCarryTheRangeNoise) {
+  const geometry::LaserScan scan = ExampleScan();
+  const perception::Detector detector(testing::PaperModels());
+  const perception::DetectionResult result = detector.Detect(scan);
+  for (const bool explain : {false, true}) {
+    const nlohmann::json j = DetectionResultToJson(result, explain);
+    ASSERT_TRUE(j.contains("stats"));
+    ASSERT_TRUE(j["stats"].contains("range_noise_m")) << j["stats"].dump();
+    ASSERT_TRUE(j["stats"]["range_noise_m"].is_number());
+    EXPECT_DOUBLE_EQ(j["stats"]["range_noise_m"].get<double>(), result.stats.range_noise_m);
+  }
+  EXPECT_NEAR(result.stats.range_noise_m, 0.010, 0.0015);
+  // Written by DetectionStatsToJson itself, as a number.
+  perception::DetectionStats stats;
+  stats.range_noise_m = 0.0123;
+  EXPECT_DOUBLE_EQ(DetectionStatsToJson(stats)["range_noise_m"].get<double>(), 0.0123);
+
+  geometry::LaserScan empty = scan;
+  empty.ranges.assign(empty.ranges.size(), std::numeric_limits<double>::quiet_NaN());
+  const nlohmann::json none = DetectionResultToJson(detector.Detect(empty), false);
+  ASSERT_TRUE(none["stats"].contains("range_noise_m"));
+  EXPECT_EQ(none["stats"]["range_noise_m"].get<double>(), 0.0);
 }
 
 }  // namespace

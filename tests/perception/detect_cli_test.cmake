@@ -16,6 +16,10 @@ expect_run(0 "\"model\":\"t1-rect-1075x883\".*\"x\":(1\\.99|2\\.00)" --models ${
 expect_run(0 "\"base\":.*\"map\":" --models ${MODELS} --scan ${DATA}/example_scan.json
            --preset 2.1,0.1,0.0 --extrinsic 0.3,0,0 --robot-pose 1,2,0.5
            --params ${SOURCE_DIR}/config/detector.yaml)
+# The scan's own range noise is in the stats (the example scan was simulated with 10 mm range
+# noise: the estimate must read 9.0-10.9 mm; it reads 9.7).
+expect_run(0 "\"stats\":{.*\"range_noise_m\":0\\.0(09|10)[0-9]*[,}]" --models ${MODELS}
+           --scan ${DATA}/example_scan.json)
 # No shelf where the preset looks (far from the shelf, ROI empty): empty list, exit 0.
 expect_run(0 "\"detections\":\\[\\]" --models ${MODELS} --scan ${DATA}/example_scan.json
            --preset -3,3,0)

@@ -3,6 +3,7 @@
 #include "perception/detector_config.hpp"
 
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -39,6 +40,20 @@ const RuleCase kCases[] = {
      [](auto& c) { c.preprocess.min_point_fraction = -0.1; }},
     {"min_point_fraction_above_one", "preprocess.min_point_fraction",
      [](auto& c) { c.preprocess.min_point_fraction = 1.1; }},
+    {"split_max_extra_negative", "preprocess.split_max_extra_m",
+     [](auto& c) { c.preprocess.split_max_extra_m = -0.01; }},
+    {"split_min_step_zero", "preprocess.split_min_step_m",
+     [](auto& c) { c.preprocess.split_min_step_m = 0.0; }},
+    {"split_min_step_negative", "preprocess.split_min_step_m",
+     [](auto& c) { c.preprocess.split_min_step_m = -0.03; }},
+    {"split_noise_steps_negative", "preprocess.split_noise_steps",
+     [](auto& c) { c.preprocess.split_noise_steps = -1.0; }},
+    {"split_max_extra_nan", "preprocess.split_max_extra_m",
+     [](auto& c) { c.preprocess.split_max_extra_m = std::numeric_limits<double>::quiet_NaN(); }},
+    {"split_min_step_nan", "preprocess.split_min_step_m",
+     [](auto& c) { c.preprocess.split_min_step_m = std::numeric_limits<double>::quiet_NaN(); }},
+    {"split_noise_steps_nan", "preprocess.split_noise_steps",
+     [](auto& c) { c.preprocess.split_noise_steps = std::numeric_limits<double>::quiet_NaN(); }},
     {"pair_tolerance", "leg_search.pair_tolerance_m",
      [](auto& c) { c.leg_search.pair_tolerance_m = 0.0; }},
     {"pythagoras_tolerance", "leg_search.pythagoras_tolerance_m",
@@ -93,6 +108,20 @@ const RuleCase kCases[] = {
     {"unobserved_credit_above_one", "evidence.unobserved_credit",
      [](auto& c) { c.evidence.unobserved_credit = 1.1; }},
     {"fit_scale", "evidence.fit_scale_m", [](auto& c) { c.evidence.fit_scale_m = 0.0; }},
+    {"fit_reference_sigma_zero", "evidence.fit_reference_sigma_m",
+     [](auto& c) { c.evidence.fit_reference_sigma_m = 0.0; }},
+    {"fit_reference_sigma_negative", "evidence.fit_reference_sigma_m",
+     [](auto& c) { c.evidence.fit_reference_sigma_m = -0.012; }},
+    {"max_fit_tolerance_factor_below_one", "evidence.max_fit_tolerance_factor",
+     [](auto& c) { c.evidence.max_fit_tolerance_factor = 0.99; }},
+    {"max_fit_tolerance_factor_zero", "evidence.max_fit_tolerance_factor",
+     [](auto& c) { c.evidence.max_fit_tolerance_factor = 0.0; }},
+    {"fit_reference_sigma_nan", "evidence.fit_reference_sigma_m",
+     [](auto& c) { c.evidence.fit_reference_sigma_m = std::numeric_limits<double>::quiet_NaN(); }},
+    {"max_fit_tolerance_factor_nan", "evidence.max_fit_tolerance_factor",
+     [](auto& c) {
+       c.evidence.max_fit_tolerance_factor = std::numeric_limits<double>::quiet_NaN();
+     }},
     {"interior_scale", "evidence.interior_scale_points",
      [](auto& c) { c.evidence.interior_scale_points = 0.0; }},
     {"foreign_leg_points", "evidence.foreign_leg_points",
@@ -118,6 +147,20 @@ const RuleCase kCases[] = {
 };
 
 TEST(DetectorConfigTest, DefaultsPass) { EXPECT_FALSE(FindConfigViolation(DetectorConfig{})); }
+
+// The new keys' limits are allowed values: 0 turns the split off, 0 noise steps leave only
+// split_min_step_m, a tolerance factor of exactly 1 never scales; a tiny positive step or
+// reference sigma is valid too.
+TEST(DetectorConfigTest, SplitAndFitToleranceLimitsPass) {
+  DetectorConfig c;
+  c.preprocess.split_max_extra_m = 0.0;
+  c.preprocess.split_noise_steps = 0.0;
+  c.preprocess.split_min_step_m = 1e-6;
+  c.evidence.fit_reference_sigma_m = 1e-6;
+  c.evidence.max_fit_tolerance_factor = 1.0;
+  const auto v = FindConfigViolation(c);
+  EXPECT_FALSE(v.has_value()) << v->key << " " << v->requirement;
+}
 
 class DetectorConfigRuleTest : public ::testing::TestWithParam<RuleCase> {};
 

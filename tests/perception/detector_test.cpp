@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -353,6 +354,175 @@ TEST(DetectorTest, FramesComposeExtrinsicAndRobotPose) {
   const Detection moved = ExpressIn(r.detections[0], T_map_lidar);
   EXPECT_LT(geometry::Distance(moved.T_lidar_shelf, T_map_shelf), kCentreTol);
   EXPECT_NEAR(moved.covariance.trace(), r.detections[0].covariance.trace(), 1e-12);
+}
+
+// A person's leg (a round post, r = 0.06 m) beside the shelf's nearest leg, on the side away
+// from the shelf's centre: its silhouette edge `gap_beams` beyond the leg's (so that no beam
+// reaches the background between them and they form one cluster) and its nearest surface
+// `depth` behind (+) or in front of (-) the leg's nearest corner. `leg` gets that leg's centre.
+sim::World ShelfWithPersonsLeg(const geometry::ShelfModel& model, const geometry::Pose2& truth,
+                               double depth, double gap_beams, Eigen::Vector2d* leg) {
+  constexpr double kRadius = 0.06;
+  sim::World world;
+  testing::AddRoom(world);
+  world.AddShelf(1, model, truth);
+  const auto footprints = world.LegFootprints(1);
+  const sim::LegFootprint* nearest = &footprints.front();
+  for (const auto& f : footprints) {
+    if (f.T_world_leg.translation().norm() < nearest->T_world_leg.translation().norm()) {
+      nearest = &f;
+    }
+  }
+  *leg = nearest->T_world_leg.translation();
+  const double side = std::atan2(leg->y(), leg->x()) > std::atan2(truth.y, truth.x) ? 1.0 : -1.0;
+  double edge = -side * M_PI, near_range = 1e9;
+  for (const Eigen::Vector2d& c : nearest->Corners()) {
+    const double b = std::atan2(c.y(), c.x());
+    edge = side > 0 ? std::max(edge, b) : std::min(edge, b);
+    near_range = std::min(near_range, c.norm());
+  }
+  const double range = near_range + depth + kRadius;
+  const double bearing = edge + side * (gap_beams * sim::LidarConfig{}.angle_increment_rad +
+                                        std::asin(kRadius / range));
+  world.AddRoundPost(range * Eigen::Vector2d(std::cos(bearing), std::sin(bearing)), kRadius);
+  return world;
+}
+
+// Where a person's leg stands against the shelf leg it touches (see ShelfWithPersonsLeg):
+// 6, 8 or 10 cm behind, or 8 or 10 cm in front of it; a quarter of a beam apart when behind,
+// half a beam when in front (a nearer round leg closer than that is cut less reliably, below).
+struct PersonsLegPlacement {
+  double depth;  ///< [m]
+  double gap;    ///< [beams]
+};
+constexpr PersonsLegPlacement kPersonsLegPlacements[] = {
+    {0.06, 0.25}, {0.08, 0.25}, {0.10, 0.25}, {-0.08, 0.5}, {-0.10, 0.5}};
+
+// True when, without the split, no leg candidate of the scan lies within 3 cm of `leg`: the
+// leg and the person's leg formed one cluster. (In some scans dropouts on the dark leg or the
+// noise separate them, and then there is nothing to split.)
+bool LegMergedWithPersonsLeg(const geometry::LaserScan& scan, const Eigen::Vector2d& leg,
+                             const geometry::Pose2& preset) {
+  PreprocessConfig no_split;
+  no_split.split_max_extra_m = 0.0;
+  const PreprocessOutput pre =
+      Preprocess(ScanToPoints(scan), scan.angle_increment, preset, PaperModels(), no_split);
+  for (const Cluster& c : pre.candidates) {
+    if ((c.centroid - leg).norm() < 0.03) return false;
+  }
+  return true;
+}
+
+// The shelf (1075x883 and 1080x856) 2 m ahead, turned 0.3 rad so that one back leg stands
+// behind a front leg: three legs in view. A person's leg touches the nearest one
+// (kPersonsLegPlacements; scans with 3 mm range noise, five seeds each; preset 7 cm and 0.03
+// rad off the truth). With the default split the touched leg is cut out again and the shelf is
+// found on its three visible legs, the touched one among them: right model, centre within
+// kCentreTol, heading within kYawTol. With split_max_extra_m = 0, in every scan where the leg
+// and the person's leg form one cluster, two legs are left and no shelf is returned; that must
+// be most scans (>= 80 %), or the test shows nothing.
+// Not asserted, measured over 20 seeds: with the person's leg 6 cm in front of the leg (its
+// centre then at about the leg's depth) the shelf was found in only 10-17 of 20 scans
+// (1075x883) and 4-7 of 20 (1080x856): the beam footprint's mixed points spread the depth step
+// at the junction over two or three beams, none of them reaching split_min_step_m (3 cm).
+TEST(DetectorTest, PersonsLegTouchingALegIsSplitOff) {
+  const auto models = PaperModels();
+  const Detector detector(models);
+  DetectorConfig no_split;
+  no_split.preprocess.split_max_extra_m = 0.0;
+  const Detector unsplit(models, no_split);
+  sim::LidarConfig lidar;
+  lidar.range_noise_sigma_m = 0.003;
+  int scans = 0, merged = 0;
+  for (const int mi : {1, 3}) {
+    const auto& model = models[mi];
+    const geometry::Pose2 truth = PlaceShelf(model, 2.0, 0.1, 0.3);
+    const geometry::Pose2 preset = truth * geometry::Pose2(0.05, -0.05, 0.03);
+    for (const PersonsLegPlacement& pl : kPersonsLegPlacements) {
+      Eigen::Vector2d leg;
+      const sim::World world = ShelfWithPersonsLeg(model, truth, pl.depth, pl.gap, &leg);
+      for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        const std::string where =
+            model.name + " depth " + std::to_string(pl.depth) + " seed " + std::to_string(seed);
+        const geometry::LaserScan scan = SimScan(world, {}, seed, lidar);
+        const DetectionResult r = detector.Detect(scan, preset);
+        ++scans;
+        ASSERT_FALSE(r.detections.empty()) << where;
+        const Detection& d = r.detections[0];
+        EXPECT_EQ(d.model, model.name) << where;
+        EXPECT_LT(geometry::Distance(d.T_lidar_shelf, truth), kCentreTol) << where;
+        EXPECT_LT(std::abs(geometry::AngleDiff(d.T_lidar_shelf.yaw, truth.yaw)), kYawTol) << where;
+        EXPECT_EQ(d.legs_used, 3) << where;
+        EXPECT_EQ(d.legs_visible, 3) << where;
+        bool touched_leg_used = false;
+        for (const auto& l : d.legs) touched_leg_used |= (l - leg).norm() < kCentreTol;
+        EXPECT_TRUE(touched_leg_used) << where;
+        if (!LegMergedWithPersonsLeg(scan, leg, preset)) continue;
+        ++merged;
+        const DetectionResult u = unsplit.Detect(scan, preset);
+        EXPECT_TRUE(u.detections.empty()) << where << ": " << u.detections.size() << " detections";
+      }
+    }
+  }
+  std::printf("[ person's leg ] 3 legs in view: merged with the leg in %d of %d scans\n", merged,
+              scans);
+  EXPECT_GE(merged, scans * 8 / 10);
+}
+
+// The same person's leg with all four legs in view (heading 0): without the split the shelf is
+// still found but on three legs (the touched one lost) where the two formed one cluster; with
+// the split, on all four, whenever the touched leg returned at least two points (a piece cut
+// off needs two; the dark leg's dropouts left fewer in 4 of these 50 scans, at most 10 % is
+// allowed). Both within kCentreTol, right model. As above, the two must have formed one
+// cluster in >= 80 % of the scans.
+TEST(DetectorTest, PersonsLegTouchingALegOfAFullyVisibleShelf) {
+  const auto models = PaperModels();
+  const Detector detector(models);
+  DetectorConfig no_split;
+  no_split.preprocess.split_max_extra_m = 0.0;
+  const Detector unsplit(models, no_split);
+  sim::LidarConfig lidar;
+  lidar.range_noise_sigma_m = 0.003;
+  int scans = 0, merged = 0, few_returns = 0;
+  for (const int mi : {1, 3}) {
+    const auto& model = models[mi];
+    const geometry::Pose2 truth = PlaceShelf(model, 2.0, 0.1, 0.0);
+    const geometry::Pose2 preset = truth * geometry::Pose2(0.05, -0.05, 0.03);
+    for (const PersonsLegPlacement& pl : kPersonsLegPlacements) {
+      Eigen::Vector2d leg;
+      const sim::World world = ShelfWithPersonsLeg(model, truth, pl.depth, pl.gap, &leg);
+      for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        const std::string where =
+            model.name + " depth " + std::to_string(pl.depth) + " seed " + std::to_string(seed);
+        const geometry::LaserScan scan = SimScan(world, {}, seed, lidar);
+        const DetectionResult r = detector.Detect(scan, preset);
+        const DetectionResult u = unsplit.Detect(scan, preset);
+        ++scans;
+        ASSERT_FALSE(r.detections.empty()) << where;
+        ASSERT_FALSE(u.detections.empty()) << where;
+        EXPECT_EQ(r.detections[0].model, model.name) << where;
+        EXPECT_EQ(u.detections[0].model, model.name) << where;
+        EXPECT_LT(geometry::Distance(r.detections[0].T_lidar_shelf, truth), kCentreTol) << where;
+        EXPECT_LT(geometry::Distance(u.detections[0].T_lidar_shelf, truth), kCentreTol) << where;
+        int leg_returns = 0;
+        for (const ScanPoint& q : ScanToPoints(scan)) leg_returns += (q.p - leg).norm() < 0.035;
+        if (leg_returns >= 2) {
+          EXPECT_EQ(r.detections[0].legs_used, 4) << where;
+        } else {
+          ++few_returns;
+        }
+        if (!LegMergedWithPersonsLeg(scan, leg, preset)) continue;
+        ++merged;
+        EXPECT_EQ(u.detections[0].legs_used, 3) << where;
+      }
+    }
+  }
+  std::printf(
+      "[ person's leg ] 4 legs in view: merged with the leg in %d of %d scans, %d with < 2 "
+      "returns on it\n",
+      merged, scans, few_returns);
+  EXPECT_GE(merged, scans * 8 / 10);
+  EXPECT_LE(few_returns, scans / 10);
 }
 
 }  // namespace
