@@ -413,6 +413,30 @@ bool LegMergedWithPersonsLeg(const geometry::LaserScan& scan, const Eigen::Vecto
   return true;
 }
 
+// Calls `check` for every scan of ShelfWithPersonsLeg over both close models (1075x883,
+// 1080x856) 2 m ahead turned `yaw`, every placement and seeds 1-5 (3 mm range noise), with the
+// truth, a preset 7 cm and 0.03 rad off it, the touched leg's centre and a label for messages.
+template <typename Check>
+void ForEachPersonsLegScan(double yaw, Check check) {
+  const auto models = PaperModels();
+  sim::LidarConfig lidar;
+  lidar.range_noise_sigma_m = 0.003;
+  for (const int mi : {1, 3}) {
+    const auto& model = models[mi];
+    const geometry::Pose2 truth = PlaceShelf(model, 2.0, 0.1, yaw);
+    const geometry::Pose2 preset = truth * geometry::Pose2(0.05, -0.05, 0.03);
+    for (const PersonsLegPlacement& pl : kPersonsLegPlacements) {
+      Eigen::Vector2d leg;
+      const sim::World world = ShelfWithPersonsLeg(model, truth, pl.depth, pl.gap, &leg);
+      for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        const std::string where =
+            model.name + " depth " + std::to_string(pl.depth) + " seed " + std::to_string(seed);
+        check(model, truth, preset, leg, SimScan(world, {}, seed, lidar), where);
+      }
+    }
+  }
+}
+
 // The shelf (1075x883 and 1080x856) 2 m ahead, turned 0.3 rad so that one back leg stands
 // behind a front leg: three legs in view. A person's leg touches the nearest one
 // (kPersonsLegPlacements; scans with 3 mm range noise, five seeds each; preset 7 cm and 0.03
@@ -431,39 +455,27 @@ TEST(DetectorTest, PersonsLegTouchingALegIsSplitOff) {
   DetectorConfig no_split;
   no_split.preprocess.split_max_extra_m = 0.0;
   const Detector unsplit(models, no_split);
-  sim::LidarConfig lidar;
-  lidar.range_noise_sigma_m = 0.003;
   int scans = 0, merged = 0;
-  for (const int mi : {1, 3}) {
-    const auto& model = models[mi];
-    const geometry::Pose2 truth = PlaceShelf(model, 2.0, 0.1, 0.3);
-    const geometry::Pose2 preset = truth * geometry::Pose2(0.05, -0.05, 0.03);
-    for (const PersonsLegPlacement& pl : kPersonsLegPlacements) {
-      Eigen::Vector2d leg;
-      const sim::World world = ShelfWithPersonsLeg(model, truth, pl.depth, pl.gap, &leg);
-      for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-        const std::string where =
-            model.name + " depth " + std::to_string(pl.depth) + " seed " + std::to_string(seed);
-        const geometry::LaserScan scan = SimScan(world, {}, seed, lidar);
-        const DetectionResult r = detector.Detect(scan, preset);
-        ++scans;
-        ASSERT_FALSE(r.detections.empty()) << where;
-        const Detection& d = r.detections[0];
-        EXPECT_EQ(d.model, model.name) << where;
-        EXPECT_LT(geometry::Distance(d.T_lidar_shelf, truth), kCentreTol) << where;
-        EXPECT_LT(std::abs(geometry::AngleDiff(d.T_lidar_shelf.yaw, truth.yaw)), kYawTol) << where;
-        EXPECT_EQ(d.legs_used, 3) << where;
-        EXPECT_EQ(d.legs_visible, 3) << where;
-        bool touched_leg_used = false;
-        for (const auto& l : d.legs) touched_leg_used |= (l - leg).norm() < kCentreTol;
-        EXPECT_TRUE(touched_leg_used) << where;
-        if (!LegMergedWithPersonsLeg(scan, leg, preset)) continue;
-        ++merged;
-        const DetectionResult u = unsplit.Detect(scan, preset);
-        EXPECT_TRUE(u.detections.empty()) << where << ": " << u.detections.size() << " detections";
-      }
-    }
-  }
+  ForEachPersonsLegScan(0.3, [&](const geometry::ShelfModel& model, const geometry::Pose2& truth,
+                                 const geometry::Pose2& preset, const Eigen::Vector2d& leg,
+                                 const geometry::LaserScan& scan, const std::string& where) {
+    const DetectionResult r = detector.Detect(scan, preset);
+    ++scans;
+    ASSERT_FALSE(r.detections.empty()) << where;
+    const Detection& d = r.detections[0];
+    EXPECT_EQ(d.model, model.name) << where;
+    EXPECT_LT(geometry::Distance(d.T_lidar_shelf, truth), kCentreTol) << where;
+    EXPECT_LT(std::abs(geometry::AngleDiff(d.T_lidar_shelf.yaw, truth.yaw)), kYawTol) << where;
+    EXPECT_EQ(d.legs_used, 3) << where;
+    EXPECT_EQ(d.legs_visible, 3) << where;
+    bool touched_leg_used = false;
+    for (const auto& l : d.legs) touched_leg_used |= (l - leg).norm() < kCentreTol;
+    EXPECT_TRUE(touched_leg_used) << where;
+    if (!LegMergedWithPersonsLeg(scan, leg, preset)) return;
+    ++merged;
+    const DetectionResult u = unsplit.Detect(scan, preset);
+    EXPECT_TRUE(u.detections.empty()) << where << ": " << u.detections.size() << " detections";
+  });
   std::printf("[ person's leg ] 3 legs in view: merged with the leg in %d of %d scans\n", merged,
               scans);
   EXPECT_GE(merged, scans * 8 / 10);
@@ -481,42 +493,30 @@ TEST(DetectorTest, PersonsLegTouchingALegOfAFullyVisibleShelf) {
   DetectorConfig no_split;
   no_split.preprocess.split_max_extra_m = 0.0;
   const Detector unsplit(models, no_split);
-  sim::LidarConfig lidar;
-  lidar.range_noise_sigma_m = 0.003;
   int scans = 0, merged = 0, few_returns = 0;
-  for (const int mi : {1, 3}) {
-    const auto& model = models[mi];
-    const geometry::Pose2 truth = PlaceShelf(model, 2.0, 0.1, 0.0);
-    const geometry::Pose2 preset = truth * geometry::Pose2(0.05, -0.05, 0.03);
-    for (const PersonsLegPlacement& pl : kPersonsLegPlacements) {
-      Eigen::Vector2d leg;
-      const sim::World world = ShelfWithPersonsLeg(model, truth, pl.depth, pl.gap, &leg);
-      for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-        const std::string where =
-            model.name + " depth " + std::to_string(pl.depth) + " seed " + std::to_string(seed);
-        const geometry::LaserScan scan = SimScan(world, {}, seed, lidar);
-        const DetectionResult r = detector.Detect(scan, preset);
-        const DetectionResult u = unsplit.Detect(scan, preset);
-        ++scans;
-        ASSERT_FALSE(r.detections.empty()) << where;
-        ASSERT_FALSE(u.detections.empty()) << where;
-        EXPECT_EQ(r.detections[0].model, model.name) << where;
-        EXPECT_EQ(u.detections[0].model, model.name) << where;
-        EXPECT_LT(geometry::Distance(r.detections[0].T_lidar_shelf, truth), kCentreTol) << where;
-        EXPECT_LT(geometry::Distance(u.detections[0].T_lidar_shelf, truth), kCentreTol) << where;
-        int leg_returns = 0;
-        for (const ScanPoint& q : ScanToPoints(scan)) leg_returns += (q.p - leg).norm() < 0.035;
-        if (leg_returns >= 2) {
-          EXPECT_EQ(r.detections[0].legs_used, 4) << where;
-        } else {
-          ++few_returns;
-        }
-        if (!LegMergedWithPersonsLeg(scan, leg, preset)) continue;
-        ++merged;
-        EXPECT_EQ(u.detections[0].legs_used, 3) << where;
-      }
+  ForEachPersonsLegScan(0.0, [&](const geometry::ShelfModel& model, const geometry::Pose2& truth,
+                                 const geometry::Pose2& preset, const Eigen::Vector2d& leg,
+                                 const geometry::LaserScan& scan, const std::string& where) {
+    const DetectionResult r = detector.Detect(scan, preset);
+    const DetectionResult u = unsplit.Detect(scan, preset);
+    ++scans;
+    ASSERT_FALSE(r.detections.empty()) << where;
+    ASSERT_FALSE(u.detections.empty()) << where;
+    EXPECT_EQ(r.detections[0].model, model.name) << where;
+    EXPECT_EQ(u.detections[0].model, model.name) << where;
+    EXPECT_LT(geometry::Distance(r.detections[0].T_lidar_shelf, truth), kCentreTol) << where;
+    EXPECT_LT(geometry::Distance(u.detections[0].T_lidar_shelf, truth), kCentreTol) << where;
+    int leg_returns = 0;
+    for (const ScanPoint& q : ScanToPoints(scan)) leg_returns += (q.p - leg).norm() < 0.035;
+    if (leg_returns >= 2) {
+      EXPECT_EQ(r.detections[0].legs_used, 4) << where;
+    } else {
+      ++few_returns;
     }
-  }
+    if (!LegMergedWithPersonsLeg(scan, leg, preset)) return;
+    ++merged;
+    EXPECT_EQ(u.detections[0].legs_used, 3) << where;
+  });
   std::printf(
       "[ person's leg ] 4 legs in view: merged with the leg in %d of %d scans, %d with < 2 "
       "returns on it\n",

@@ -13,12 +13,9 @@
 namespace shelfdock::perception {
 namespace {
 
-constexpr double kAlpha = 0.005817764173314432;  // WLR-716: 1/3 degree
+constexpr double kAlpha = testing::kWlrAlpha;
 
-ScanPoint At(int beam, double range) {
-  const double a = beam * kAlpha;
-  return {Eigen::Vector2d(range * std::cos(a), range * std::sin(a)), range, a, beam};
-}
+ScanPoint At(int beam, double range) { return testing::BeamPoint(beam, range); }
 
 TEST(PreprocessTest, ScanToPointsSkipsInvalidReturns) {
   geometry::LaserScan scan;

@@ -22,6 +22,15 @@ namespace shelfdock::perception::testing {
 using shelfdock::testing::MakeModel;
 using shelfdock::testing::PaperModels;
 
+/// The WLR-716's angle increment: 1/3 degree.
+inline constexpr double kWlrAlpha = 0.005817764173314432;
+
+/// An exact return at `range` on beam `beam` of a fan starting at angle 0 in kWlrAlpha steps.
+inline ScanPoint BeamPoint(int beam, double range) {
+  const double a = beam * kWlrAlpha;
+  return {Eigen::Vector2d(range * std::cos(a), range * std::sin(a)), range, a, beam};
+}
+
 /// A 12 m x 10 m room around the origin (walls far behind every test shelf).
 inline void AddRoom(sim::World& world) {
   world.AddWall({{-5.0, -5.0}, {7.0, -5.0}, {7.0, 5.0}, {-5.0, 5.0}}, true);
