@@ -48,16 +48,16 @@ struct RejectionCounts {
 
 /// Counters that tell where candidates were dropped; useful when tuning on real scans.
 struct DetectionStats {
-  int valid_points = 0;      ///< finite returns within [range_min, range_max]
-  int roi_points = 0;        ///< points kept by the region of interest
-  int clusters = 0;          ///< clusters before size screening
-  int trailing_removed = 0;  ///< points dropped by the Eq. 1 trailing-point filter
-  int leg_candidates = 0;    ///< clusters that fit the size of some model's leg
-  int leg_sets = 0;          ///< 3- and 4-leg sets that passed the geometric search
-  int model_pairs = 0;       ///< points-model pairs that passed Eq. 2 screening
-  int hypotheses = 0;        ///< points-model pairs fitted and scored (one per pair)
+  int valid_points = 0;        ///< finite returns within [range_min, range_max]
+  int roi_points = 0;          ///< points kept by the region of interest
+  int clusters = 0;            ///< clusters before size screening
+  int trailing_removed = 0;    ///< points dropped by the Eq. 1 trailing-point filter
+  int leg_candidates = 0;      ///< clusters that fit the size of some model's leg
+  int leg_sets = 0;            ///< 3- and 4-leg sets that passed the geometric search
+  int model_pairs = 0;         ///< points-model pairs that passed Eq. 2 screening
+  int hypotheses = 0;          ///< points-model pairs fitted and scored (one per pair)
   double range_noise_m = 0.0;  ///< [m] range noise the scan shows (EstimateRangeNoise; 0: unknown)
-  RejectionCounts rejected;  ///< why hypotheses were not returned
+  RejectionCounts rejected;    ///< why hypotheses were not returned
 };
 
 /// What became of one hypothesis (a leg set paired with a model).

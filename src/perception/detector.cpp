@@ -177,7 +177,8 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
                                     in.shelf_like_spans, in.angle_increment_rad, config.evidence);
   // The fit term reads err_sum against the scale the legs' measurement allows.
   ev.confidence = ShelfConfidence(ev, refined.err_sum / tolerance, config.evidence);
-  h.corners_present = static_cast<int>(std::count(ev.legs.begin(), ev.legs.end(), LegView::kPresent));
+  h.corners_present =
+      static_cast<int>(std::count(ev.legs.begin(), ev.legs.end(), LegView::kPresent));
   rec.confidence = ev.confidence;
   rec.legs_visible = ev.legs_seen;
   rec.legs_occluded = ev.legs_occluded;
@@ -330,13 +331,13 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   for (const LegSet& set : sets) {
     for (int i = 0; i < set.count; ++i) shelf_like_spans[pre.candidates[set.legs[i]].span] = 1;
   }
-  const ScoreInputs inputs{pre,
-                           shelf_like_spans,
-                           angle_increment_rad,
-                           T_lidar_preset,
-                           config_,
-                           pre.range_noise_m > 0.0 ? pre.range_noise_m
-                                                   : config_.leg_fit.range_sigma_m};
+  const ScoreInputs inputs{
+      pre,
+      shelf_like_spans,
+      angle_increment_rad,
+      T_lidar_preset,
+      config_,
+      pre.range_noise_m > 0.0 ? pre.range_noise_m : config_.leg_fit.range_sigma_m};
   // Scores one leg set against every model its cluster centres pass Eq. 2 for; the returned
   // hypothesis of the best model, if any. `weighed` tells whether some hypothesis got past the
   // geometry (fit and Eq. 2) to the scan's evidence.
@@ -356,7 +357,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     for (const ModelPair& pair : pairs) {
       ++stats.hypotheses;
       Hypothesis h = Score(set, models_[pair.model], pair.model, hint, inputs, cache);
-      weighed = weighed || (h.record.verdict != Verdict::kFit && h.record.verdict != Verdict::kModel);
+      weighed =
+          weighed || (h.record.verdict != Verdict::kFit && h.record.verdict != Verdict::kModel);
       if (h.record.verdict == Verdict::kReturned) {
         if (!best) {
           best = std::move(h);

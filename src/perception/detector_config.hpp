@@ -84,25 +84,25 @@ struct EvidenceConfig {
   int min_through_beams = 2;       ///< [-] beams through a leg that prove it absent
   double leg_position_tolerance_m = 0.005;  ///< [m] error of a predicted leg position: only
                                             ///< beams this far inside its edge prove absence
-  double interior_margin_m = 0.06;       ///< [m] shrink of the footprint for the free-space check
-  double occluded_credit = 0.75;         ///< [-] a hidden leg counts this much of a seen one
-  double unobserved_credit = 0.5;        ///< [-] a leg no beam reaches counts this much
-  double fit_scale_m = 0.03;             ///< [m] err_sum that halves the confidence
-  double fit_reference_sigma_m = 0.012;  ///< [m] leg-centre error fit_scale_m and the 3-leg
-                                         ///< err_sum bounds are set for; a hypothesis whose
-                                         ///< farthest leg is known less well (noisy ranges,
-                                         ///< wide beam spacing) gets them scaled up
+  double interior_margin_m = 0.06;        ///< [m] shrink of the footprint for the free-space check
+  double occluded_credit = 0.75;          ///< [-] a hidden leg counts this much of a seen one
+  double unobserved_credit = 0.5;         ///< [-] a leg no beam reaches counts this much
+  double fit_scale_m = 0.03;              ///< [m] err_sum that halves the confidence
+  double fit_reference_sigma_m = 0.012;   ///< [m] leg-centre error fit_scale_m is set for; a
+                                          ///< four-leg hypothesis whose farthest leg is known
+                                          ///< less well (noisy ranges, wide beam spacing) gets
+                                          ///< it scaled up
   double max_fit_tolerance_factor = 1.5;  ///< [-] cap on that scaling
-  double interior_scale_points = 4.0;    ///< [-] points inside the footprint that halve it
-  double foreign_leg_points = 6.0;       ///< [-] a leg-sized cluster inside counts as this many
-  double object_point_weight = 0.25;     ///< [-] weight of an interior point of a larger object
-  double leg_size_margin_m = 0.04;       ///< [m] clusters up to the leg's extent plus this are
-                                         ///< leg-sized
-  double leg_width_slack_m = 0.015;      ///< [m] seen leg widths may differ by one beam plus this
-                                         ///< (the beam footprint blurs a leg's edges)
-  double leg_width_bias_slack_m = 0.01;  ///< [m] legs' mean width: half a beam plus this
-  double leg_width_scale_m = 0.01;       ///< [m] leg width error beyond the slack that halves it
-  double min_confidence = 0.3;           ///< [-] below this a hypothesis is not returned
+  double interior_scale_points = 4.0;     ///< [-] points inside the footprint that halve it
+  double foreign_leg_points = 6.0;        ///< [-] a leg-sized cluster inside counts as this many
+  double object_point_weight = 0.25;      ///< [-] weight of an interior point of a larger object
+  double leg_size_margin_m = 0.04;        ///< [m] clusters up to the leg's extent plus this are
+                                          ///< leg-sized
+  double leg_width_slack_m = 0.015;       ///< [m] seen leg widths may differ by one beam plus this
+                                          ///< (the beam footprint blurs a leg's edges)
+  double leg_width_bias_slack_m = 0.01;   ///< [m] legs' mean width: half a beam plus this
+  double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
+  double min_confidence = 0.3;            ///< [-] below this a hypothesis is not returned
 };
 
 /// How far a returned shelf may stand from the preset (the pose the map expects it at). The

@@ -158,8 +158,8 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   out.range_noise_m = EstimateRangeNoise(out.points, out.spans).sigma_m;
   double max_leg_extent = 0.0;
   for (const auto& m : models) max_leg_extent = std::max(max_leg_extent, m.leg.Extent());
-  const double split_step =
-      std::max(config.split_min_step_m, config.split_noise_steps * std::sqrt(2.0) * out.range_noise_m);
+  const double split_step = std::max(config.split_min_step_m,
+                                     config.split_noise_steps * std::sqrt(2.0) * out.range_noise_m);
   // The points of [begin, end) as a candidate of span si, when they fit a leg.
   auto add_candidate = [&](std::size_t begin, std::size_t end, int si, std::size_t min_points) {
     if (end - begin < min_points) return false;

@@ -96,8 +96,8 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
     window_beams = static_cast<int>(std::floor(centre + half) - std::ceil(centre - half)) + 1;
   }
   const bool silent_beams = window_beams > wide_returns;
-  const int needed = silent_beams ? config.min_through_beams
-                                  : std::min(config.min_through_beams, narrow_returns);
+  const int needed =
+      silent_beams ? config.min_through_beams : std::min(config.min_through_beams, narrow_returns);
   if (through > 0 && through >= needed) look.view = LegView::kSeenThrough;
   return look;
 }
