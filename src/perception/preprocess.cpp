@@ -36,6 +36,21 @@ bool SameCluster(const ScanPoint& a, const ScanPoint& b, double alpha,
       config.cluster_gap_m + config.cluster_gap_beams * r * alpha * static_cast<double>(steps);
   return (b.p - a.p).squaredNorm() <= gap * gap;
 }
+
+// The span [begin, end) of `points` with its centroid and extent.
+ClusterSpan MakeSpan(const std::vector<ScanPoint>& points, std::size_t begin, std::size_t end) {
+  ClusterSpan span;
+  span.begin = begin;
+  span.end = end;
+  double extent2 = 0.0;
+  for (std::size_t k = begin; k < end; ++k) {
+    span.centroid += points[k].p;
+    extent2 = std::max(extent2, (points[k].p - points[begin].p).squaredNorm());
+  }
+  span.centroid /= static_cast<double>(end - begin);
+  span.extent_m = std::sqrt(extent2);
+  return span;
+}
 }  // namespace
 
 std::vector<ClusterSpan> ClusterSpans(const std::vector<ScanPoint>& points,
@@ -45,17 +60,7 @@ std::vector<ClusterSpan> ClusterSpans(const std::vector<ScanPoint>& points,
   std::size_t begin = 0;
   for (std::size_t i = 1; i <= points.size(); ++i) {
     if (i < points.size() && SameCluster(points[i - 1], points[i], alpha, config)) continue;
-    ClusterSpan span;
-    span.begin = begin;
-    span.end = i;
-    double extent2 = 0.0;
-    for (std::size_t k = begin; k < i; ++k) {
-      span.centroid += points[k].p;
-      extent2 = std::max(extent2, (points[k].p - points[begin].p).squaredNorm());
-    }
-    span.centroid /= static_cast<double>(i - begin);
-    span.extent_m = std::sqrt(extent2);
-    spans.push_back(span);
+    spans.push_back(MakeSpan(points, begin, i));
     begin = i;
   }
   return spans;
@@ -160,18 +165,17 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   for (const auto& m : models) max_leg_extent = std::max(max_leg_extent, m.leg.Extent());
   const double split_step = std::max(config.split_min_step_m,
                                      config.split_noise_steps * std::sqrt(2.0) * out.range_noise_m);
-  // The points of [begin, end) as a candidate of span si, when they fit a leg.
-  auto add_candidate = [&](std::size_t begin, std::size_t end, int si, std::size_t min_points) {
-    if (end - begin < min_points) return false;
-    Cluster c;
-    c.points.assign(out.points.begin() + static_cast<std::ptrdiff_t>(begin),
-                    out.points.begin() + static_cast<std::ptrdiff_t>(end));
-    for (const ScanPoint& q : c.points) {
-      c.centroid += q.p;
-      c.extent_m = std::max(c.extent_m, (q.p - c.points.front().p).norm());
+  // `piece` (a span or part of span si) as a candidate, when it has min_points and fits a leg.
+  auto add_candidate = [&](const ClusterSpan& piece, int si, std::size_t min_points) {
+    if (piece.size() < min_points || !FitsLegSize(piece.centroid, piece.extent_m, piece.size(),
+                                                  angle_increment_rad, models, config)) {
+      return false;
     }
-    c.centroid /= static_cast<double>(c.points.size());
-    if (!FitsLegSize(c, angle_increment_rad, models, config)) return false;
+    Cluster c;
+    c.points.assign(out.points.begin() + static_cast<std::ptrdiff_t>(piece.begin),
+                    out.points.begin() + static_cast<std::ptrdiff_t>(piece.end));
+    c.centroid = piece.centroid;
+    c.extent_m = piece.extent_m;
     c.span = si;
     out.candidates.push_back(std::move(c));
     return true;
@@ -183,11 +187,7 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     }
     ++out.clusters;
     out.roi_points += static_cast<int>(span.size());
-    if (FitsLegSize(span.centroid, span.extent_m, span.size(), angle_increment_rad, models,
-                    config)) {
-      add_candidate(span.begin, span.end, static_cast<int>(si), 1);
-      continue;
-    }
+    if (add_candidate(span, static_cast<int>(si), 1)) continue;
     // Too wide for a leg, but not by much: a leg with something touching it (a person's leg,
     // a box) is cut out at the strongest depth step, when that step stands out of the noise.
     if (span.extent_m > max_leg_extent + config.leg_extent_margin_m + config.split_max_extra_m) {
@@ -195,8 +195,9 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     }
     // A piece needs two points: one return beside a step is as often a mixed point.
     if (const auto k = StrongestDepthStep(out.points, span, split_step)) {
-      out.split_candidates += add_candidate(span.begin, *k, static_cast<int>(si), 2);
-      out.split_candidates += add_candidate(*k, span.end, static_cast<int>(si), 2);
+      const int s = static_cast<int>(si);
+      out.split_candidates += add_candidate(MakeSpan(out.points, span.begin, *k), s, 2);
+      out.split_candidates += add_candidate(MakeSpan(out.points, *k, span.end), s, 2);
     }
   }
   return out;

@@ -20,6 +20,8 @@ int SpanOfPoint(const std::vector<ClusterSpan>& spans, std::size_t i) {
 struct LegLook {
   LegView view = LegView::kUnobserved;
   std::vector<int> occluder_spans;  // clusters in front of the leg
+  // The leg's bearing lies inside the scan's field of view (between its first and last return).
+  bool in_view = false;
 };
 
 // Looks along the beams toward a leg that no cluster of the hypothesis stands for. Beams within
@@ -29,9 +31,14 @@ struct LegLook {
 LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
                   const PreprocessOutput& pre, double alpha, const EvidenceConfig& config) {
   LegLook look;
+  const double bearing = std::atan2(leg.y(), leg.x());
+  if (!pre.points.empty()) {
+    const double a0 = std::min(pre.points.front().angle, pre.points.back().angle);
+    const double a1 = std::max(pre.points.front().angle, pre.points.back().angle);
+    look.in_view = bearing > a0 && bearing < a1;
+  }
   const double range = leg.norm();
   if (range < 1e-6) return look;
-  const double bearing = std::atan2(leg.y(), leg.x());
   // Any return near the leg's silhouette (half a beam wider) can be the leg or its occluder;
   // only beams well inside it, allowing for the error of the predicted position, prove that
   // nothing stands there when they pass through.
@@ -168,15 +175,9 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       ++width_count;
       continue;
     }
-    const Eigen::Vector2d leg = T_lidar_shelf * corners[k];
-    LegLook look = LookAtLeg(leg, model.leg, pre, alpha, config);
+    LegLook look = LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, config);
     ev.legs[k] = look.view;
-    if (look.view == LegView::kUnobserved && !pre.points.empty()) {
-      const double a0 = std::min(pre.points.front().angle, pre.points.back().angle);
-      const double a1 = std::max(pre.points.front().angle, pre.points.back().angle);
-      const double bearing = std::atan2(leg.y(), leg.x());
-      if (bearing > a0 && bearing < a1) ++ev.legs_unobserved_in_view;
-    }
+    if (look.view == LegView::kUnobserved && look.in_view) ++ev.legs_unobserved_in_view;
     if (look.view == LegView::kOccluded) {
       if (std::any_of(look.occluder_spans.begin(), look.occluder_spans.end(),
                       [&](int span) { return !listed(own_spans, span); })) {
