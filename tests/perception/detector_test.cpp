@@ -398,15 +398,20 @@ struct PersonsLegPlacement {
 constexpr PersonsLegPlacement kPersonsLegPlacements[] = {
     {0.06, 0.25}, {0.08, 0.25}, {0.10, 0.25}, {-0.08, 0.5}, {-0.10, 0.5}};
 
+// The default detector config with the depth-step split off.
+DetectorConfig NoSplit() {
+  DetectorConfig config;
+  config.preprocess.split_max_extra_m = 0.0;
+  return config;
+}
+
 // True when, without the split, no leg candidate of the scan lies within 3 cm of `leg`: the
 // leg and the person's leg formed one cluster. (In some scans dropouts on the dark leg or the
 // noise separate them, and then there is nothing to split.)
 bool LegMergedWithPersonsLeg(const geometry::LaserScan& scan, const Eigen::Vector2d& leg,
                              const geometry::Pose2& preset) {
-  PreprocessConfig no_split;
-  no_split.split_max_extra_m = 0.0;
-  const PreprocessOutput pre =
-      Preprocess(ScanToPoints(scan), scan.angle_increment, preset, PaperModels(), no_split);
+  const PreprocessOutput pre = Preprocess(ScanToPoints(scan), scan.angle_increment, preset,
+                                          PaperModels(), NoSplit().preprocess);
   for (const Cluster& c : pre.candidates) {
     if ((c.centroid - leg).norm() < 0.03) return false;
   }
@@ -452,9 +457,7 @@ void ForEachPersonsLegScan(double yaw, Check check) {
 TEST(DetectorTest, PersonsLegTouchingALegIsSplitOff) {
   const auto models = PaperModels();
   const Detector detector(models);
-  DetectorConfig no_split;
-  no_split.preprocess.split_max_extra_m = 0.0;
-  const Detector unsplit(models, no_split);
+  const Detector unsplit(models, NoSplit());
   int scans = 0, merged = 0;
   ForEachPersonsLegScan(0.3, [&](const geometry::ShelfModel& model, const geometry::Pose2& truth,
                                  const geometry::Pose2& preset, const Eigen::Vector2d& leg,
@@ -490,9 +493,7 @@ TEST(DetectorTest, PersonsLegTouchingALegIsSplitOff) {
 TEST(DetectorTest, PersonsLegTouchingALegOfAFullyVisibleShelf) {
   const auto models = PaperModels();
   const Detector detector(models);
-  DetectorConfig no_split;
-  no_split.preprocess.split_max_extra_m = 0.0;
-  const Detector unsplit(models, no_split);
+  const Detector unsplit(models, NoSplit());
   int scans = 0, merged = 0, few_returns = 0;
   ForEachPersonsLegScan(0.0, [&](const geometry::ShelfModel& model, const geometry::Pose2& truth,
                                  const geometry::Pose2& preset, const Eigen::Vector2d& leg,
