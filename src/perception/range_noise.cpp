@@ -8,6 +8,7 @@ namespace shelfdock::perception {
 RangeNoiseEstimate EstimateRangeNoise(const std::vector<ScanPoint>& points,
                                       const std::vector<ClusterSpan>& spans, int min_samples) {
   std::vector<double> d2;
+  d2.reserve(points.size());
   for (const ClusterSpan& span : spans) {
     for (std::size_t i = span.begin + 1; i + 1 < span.end; ++i) {
       const ScanPoint& a = points[i - 1];
