@@ -24,7 +24,7 @@ struct Hypothesis {
   Detection detection;                          // filled when it passed every check
   HypothesisRecord record;                      // what was found out about it
   std::array<int, 4> clusters{-1, -1, -1, -1};  // leg candidates it is made of
-  double leg_chi2 = 0.0;                        // LegChiSquare of its fitted legs
+  double leg_chi2 = 0.0;                        // RefineShelfPose's, of its fitted legs
   int corners_present = 0;  // corners without a leg cluster where returns stand at the leg's range
 };
 
@@ -108,71 +108,23 @@ void Count(Verdict verdict, RejectionCounts& rejected) {
   }
 }
 
-// Chi-square of fitted legs against the model's corners, each leg weighed by what its own
-// points can tell: along its beam the range noise over the number of returns on it, across the
-// beam the quantisation of one beam step (step^2 / 12) over the same count; a millimetre floor
-// either way. It compares the models of one leg set: a far leg seen by one noisy return says
-// little about which of two close models (1075x883, 1080x856) it is. The pose is the one that
-// minimises this chi-square (Gauss-Newton from the shelf fit's pose): the shelf fit weighs the
-// legs by range alone and is robust, so at its pose the model that fits worse can score better
-// (eval-layouts --scenes-per-class 1000 --seed0 5001: wrong-model-first 88 -> 80 of 9000).
-double LegChiSquare(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
-                    const geometry::ShelfModel& model, const ShelfFitResult& fit,
-                    const ScoreInputs& in) {
+// What each fitted leg's own returns can tell (RefineShelfPose): along its beam the range noise
+// over the number of returns on it, across the beam the quantisation of one beam step
+// (step^2 / 12) over the same count; a millimetre floor either way. A far leg seen by one noisy
+// return says little, about the pose or about which of two close models (1075x883, 1080x856)
+// the set is.
+std::array<LegSigma, 4> LegSigmas(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
+                                  const ScoreInputs& in) {
   constexpr double kFloor2 = 1e-6;  // (1 mm)^2
-  constexpr int kIterations = 4;
-  const auto corners = model.LegCentres();
-  // Per leg: unit vectors along and across its beam, and the inverse variances there.
-  std::array<Eigen::Vector2d, 4> along_dir{}, across_dir{};
-  std::array<double, 4> w_along{}, w_across{};
+  std::array<LegSigma, 4> sigma{};
   for (int i = 0; i < set.count; ++i) {
     const double range = std::max(legs[i].norm(), 0.1);
-    along_dir[i] = legs[i] / range;
-    across_dir[i] = Eigen::Vector2d(-along_dir[i].y(), along_dir[i].x());
     const double n = static_cast<double>(in.pre.candidates[set.legs[i]].points.size());
     const double step = range * std::abs(in.angle_increment_rad);
-    w_along[i] = 1.0 / (in.range_noise_m * in.range_noise_m / n + kFloor2);
-    w_across[i] = 1.0 / (step * step / 12.0 / n + kFloor2);
+    sigma[i].along_m = std::sqrt(in.range_noise_m * in.range_noise_m / n + kFloor2);
+    sigma[i].across_m = std::sqrt(step * step / 12.0 / n + kFloor2);
   }
-  Eigen::Vector3d x(fit.T_lidar_shelf.x, fit.T_lidar_shelf.y, fit.T_lidar_shelf.yaw);
-  auto chi2_at = [&](const Eigen::Vector3d& pose, Eigen::Matrix3d* H, Eigen::Vector3d* g) {
-    const double c = std::cos(pose.z());
-    const double s = std::sin(pose.z());
-    double chi2 = 0.0;
-    if (H) H->setZero();
-    if (g) g->setZero();
-    for (int i = 0; i < set.count; ++i) {
-      const Eigen::Vector2d& k = corners[fit.corner_of_leg[i]];
-      const Eigen::Vector2d rk(c * k.x() - s * k.y(), s * k.x() + c * k.y());
-      const Eigen::Vector2d r = legs[i] - pose.head<2>() - rk;
-      // d r / d (x, y, yaw) = (-I, -(d rk / d yaw)).
-      Eigen::Matrix<double, 2, 3> J;
-      J << -1.0, 0.0, rk.y(), 0.0, -1.0, -rk.x();
-      const std::array<std::pair<const Eigen::Vector2d*, double>, 2> rows{
-          {{&along_dir[i], w_along[i]}, {&across_dir[i], w_across[i]}}};
-      for (const auto& [dir, w] : rows) {
-        const double e = dir->dot(r);
-        const Eigen::RowVector3d j = dir->transpose() * J;
-        chi2 += w * e * e;
-        if (H) *H += w * j.transpose() * j;
-        if (g) *g += w * e * j.transpose();
-      }
-    }
-    return chi2;
-  };
-  double chi2 = chi2_at(x, nullptr, nullptr);
-  for (int it = 0; it < kIterations; ++it) {
-    Eigen::Matrix3d H;
-    Eigen::Vector3d g;
-    chi2_at(x, &H, &g);
-    const Eigen::Vector3d step = H.ldlt().solve(-g);
-    if (!step.allFinite()) break;
-    const double next = chi2_at(x + step, nullptr, nullptr);
-    if (next >= chi2) break;
-    x += step;
-    chi2 = next;
-  }
-  return chi2;
+  return sigma;
 }
 
 // Fits one points-model pair (3.3 leg centres, 3.4 shelf pose), screens it and weighs the
@@ -195,8 +147,12 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     rec.verdict = Verdict::kFit;
     return h;
   }
-  rec.T_lidar_shelf = fit->T_lidar_shelf;
-  h.leg_chi2 = LegChiSquare(legs, set, model, *fit, in);
+  // The pose each leg's returns support best; its chi-square chooses among models.
+  const ShelfRefineResult refined_pose =
+      RefineShelfPose(legs, set.count, model, *fit, LegSigmas(legs, set, in));
+  const geometry::Pose2& T_lidar_shelf = refined_pose.T_lidar_shelf;
+  rec.T_lidar_shelf = T_lidar_shelf;
+  h.leg_chi2 = refined_pose.chi2;
   // Eq. 2 again on the fitted (unbiased) leg centres: this is what tells close models apart.
   const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, model_index);
   rec.err_sum = refined.err_sum;
@@ -257,7 +213,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   rec.verdict = Verdict::kReturned;
   Detection& d = h.detection;
   d.model = model.name;
-  d.T_lidar_shelf = fit->T_lidar_shelf;
+  d.T_lidar_shelf = T_lidar_shelf;
   d.length_m = fit->length_m;
   d.width_m = fit->width_m;
   d.legs = rec.legs;
@@ -395,8 +351,9 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     const Eigen::Vector2d long_edge = edges.first_edge_long ? Eigen::Vector2d(rough[1] - rough[0])
                                                             : Eigen::Vector2d(rough[2] - rough[1]);
     const double hint = std::atan2(long_edge.y(), long_edge.x());
-    // The model of a leg set is the one its fitted legs match best (the smaller LegChiSquare);
-    // the evidence, which barely differs between close models, does not choose it.
+    // The model of a leg set is the one its fitted legs match best (the smaller chi-square in
+    // RefineShelfPose); the evidence, which barely differs between close models, does not choose
+    // it.
     std::optional<Hypothesis> best;
     for (const ModelPair& pair : pairs) {
       ++stats.hypotheses;

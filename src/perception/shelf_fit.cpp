@@ -156,4 +156,39 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
   return out;
 }
 
+ShelfRefineResult RefineShelfPose(const std::array<Eigen::Vector2d, 4>& legs, int count,
+                                  const geometry::ShelfModel& model, const ShelfFitResult& fit,
+                                  const std::array<LegSigma, 4>& sigma) {
+  const auto corners = model.LegCentres();
+  CornerCost cost;  // unused legs keep weight 0
+  for (int i = 0; i < count; ++i) {
+    cost.legs[i] = legs[i];
+    cost.corners[i] = corners[fit.corner_of_leg[i]];
+    cost.sqrt_w[i] = 1.0;
+    const double norm = legs[i].norm();
+    const Eigen::Vector2d along =
+        norm > 1e-9 ? Eigen::Vector2d(legs[i] / norm) : Eigen::Vector2d::UnitX();
+    const double w_along = 1.0 / sigma[i].along_m;
+    const double w_across = 1.0 / sigma[i].across_m;
+    cost.info_sqrt[i] << w_along * along.x(), w_along * along.y(), -w_across * along.y(),
+        w_across * along.x();
+  }
+  using AutoDiff = ceres::TinySolverAutoDiffFunction<CornerCost, 8, 3>;
+  ceres::TinySolver<AutoDiff> solver;
+  Eigen::Vector3d x(fit.T_lidar_shelf.x, fit.T_lidar_shelf.y, fit.T_lidar_shelf.yaw);
+  const AutoDiff function(cost);
+  solver.Solve(function, &x);
+  ShelfRefineResult out;
+  if (!x.allFinite()) {  // keep the fit's pose; its chi-square as it stands
+    x = Eigen::Vector3d(fit.T_lidar_shelf.x, fit.T_lidar_shelf.y, fit.T_lidar_shelf.yaw);
+  }
+  out.T_lidar_shelf = geometry::Pose2(x(0), x(1), geometry::WrapAngle(x(2)));
+  out.chi2 = 0.0;
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Vector2d r = cost.info_sqrt[i] * (legs[i] - out.T_lidar_shelf * cost.corners[i]);
+    out.chi2 += r.squaredNorm();
+  }
+  return out;
+}
+
 }  // namespace shelfdock::perception

@@ -37,4 +37,27 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
                                        const geometry::ShelfModel& model,
                                        const ShelfFitConfig& config);
 
+/// The std of one fitted leg centre along its beam and across it [m].
+struct LegSigma {
+  double along_m = 0.01;
+  double across_m = 0.01;
+};
+
+/// A shelf pose weighed by each leg's own measurement, and how well the legs fit it.
+struct ShelfRefineResult {
+  geometry::Pose2 T_lidar_shelf;  ///< heading wrapped to [-pi, pi)
+  double chi2 = 0.0;  ///< sum over legs of (error along / along_m)^2 + (error across / across_m)^2
+};
+
+/// Refines `fit` (FitShelf's pose on the same legs, with its leg-to-corner pairing) to the pose
+/// that minimises the chi-square of the legs against their model corners, leg i's error split
+/// along and across its beam and divided by sigma[i]. FitShelf weighs the legs by range alone
+/// and robustly (a wrong leg must not drag the pose); once the legs are known to be the shelf's,
+/// what each leg's returns can tell (how many, how noisy, how wide a beam step) weighs them
+/// better, and the chi-square at the minimum compares models of one leg set fairly. Plain least
+/// squares with Ceres' TinySolver from fit's pose.
+ShelfRefineResult RefineShelfPose(const std::array<Eigen::Vector2d, 4>& legs, int count,
+                                  const geometry::ShelfModel& model, const ShelfFitResult& fit,
+                                  const std::array<LegSigma, 4>& sigma);
+
 }  // namespace shelfdock::perception
