@@ -27,7 +27,8 @@ struct LegLook {
 // Looks along the beams toward a leg that no cluster of the hypothesis stands for. Beams within
 // half the leg's narrow side of its bearing must hit it if it is there: a return at its range
 // says it is (just not clustered as a leg, e.g. merged with something touching it), a nearer
-// return hides it (excused), returns well beyond it say the beams passed where it should stand.
+// return hides it (excused), returns well beyond it say the beams passed where it should stand;
+// when both, the beams that passed decide.
 LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
                   const PreprocessOutput& pre, double alpha, const EvidenceConfig& config) {
   LegLook look;
@@ -72,11 +73,13 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
     look.view = LegView::kPresent;
     return look;
   }
-  if (!look.occluder_spans.empty()) {
-    look.view = LegView::kOccluded;
+  // Something nearer in the window hides the leg, unless beams well inside its silhouette pass
+  // on to the background (below): then whatever is nearer covers only part of the window and
+  // the leg is not there (a post beside the corner of three posts in clutter).
+  if (beyond.empty()) {
+    if (!look.occluder_spans.empty()) look.view = LegView::kOccluded;
     return look;
   }
-  if (beyond.empty()) return look;
   // A beam that grazes a leg smaller than its footprint returns a mixed range between the leg
   // and what stands behind: nearer than the background the beams beside the window see. Only a
   // return as far as that background (the nearer of the two sides) passed through.
@@ -105,7 +108,11 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
   const bool silent_beams = window_beams > wide_returns;
   const int needed =
       silent_beams ? config.min_through_beams : std::min(config.min_through_beams, narrow_returns);
-  if (through > 0 && through >= needed) look.view = LegView::kSeenThrough;
+  if (through > 0 && through >= needed) {
+    look.view = LegView::kSeenThrough;
+  } else if (!look.occluder_spans.empty()) {
+    look.view = LegView::kOccluded;
+  }
   return look;
 }
 
