@@ -103,6 +103,9 @@ struct EvidenceConfig {
   double leg_width_bias_slack_m = 0.01;   ///< [m] legs' mean width: half a beam plus this
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
   double min_confidence = 0.3;            ///< [-] below this a hypothesis is not returned
+  double overlap_margin_m = 0.05;         ///< [m] two hypotheses whose leg rectangles, each
+                                          ///< shrunk by this on every side, overlap compete as
+                                          ///< if they shared a leg (shelves do not interpenetrate)
 };
 
 /// How far a returned shelf may stand from the preset (the pose the map expects it at). The

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 namespace shelfdock::perception {
 namespace {
@@ -62,8 +64,21 @@ class Search {
 }  // namespace
 
 std::vector<int> SelectDisjoint(const std::vector<std::array<int, 4>>& legs,
-                                const std::vector<double>& weights, int max_nodes) {
+                                const std::vector<double>& weights,
+                                const std::vector<std::vector<char>>& also_exclusive,
+                                int max_nodes) {
   const std::size_t n = legs.size();
+  if (weights.size() != n) {
+    throw std::invalid_argument("SelectDisjoint: " + std::to_string(weights.size()) +
+                                " weights for " + std::to_string(n) + " hypotheses");
+  }
+  if (!also_exclusive.empty() &&
+      (also_exclusive.size() != n ||
+       std::any_of(also_exclusive.begin(), also_exclusive.end(),
+                   [n](const std::vector<char>& row) { return row.size() != n; }))) {
+    throw std::invalid_argument("SelectDisjoint: also_exclusive must be empty or " +
+                                std::to_string(n) + " x " + std::to_string(n));
+  }
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -73,7 +88,8 @@ std::vector<int> SelectDisjoint(const std::vector<std::array<int, 4>>& legs,
   for (std::size_t i = 0; i < n; ++i) {
     w[i] = weights[order[i]];
     for (std::size_t j = 0; j < i; ++j) {
-      conflict[i][j] = conflict[j][i] = Share(legs[order[i]], legs[order[j]]) ? 1 : 0;
+      const bool exclusive = !also_exclusive.empty() && also_exclusive[order[i]][order[j]] != 0;
+      conflict[i][j] = conflict[j][i] = exclusive || Share(legs[order[i]], legs[order[j]]) ? 1 : 0;
     }
   }
   Search search(conflict, w, max_nodes);

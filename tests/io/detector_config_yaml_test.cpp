@@ -45,6 +45,7 @@ TEST(DetectorConfigYamlTest, ShippedFileHoldsTheStructDefaults) {
   EXPECT_EQ(read.leg_fit.pca_min_anisotropy, def.leg_fit.pca_min_anisotropy);
   EXPECT_EQ(read.shelf_fit.max_rms_m, def.shelf_fit.max_rms_m);
   EXPECT_EQ(read.evidence.min_confidence, def.evidence.min_confidence);
+  EXPECT_EQ(read.evidence.overlap_margin_m, def.evidence.overlap_margin_m);
   EXPECT_EQ(read.evidence.interior_scale_points, def.evidence.interior_scale_points);
   EXPECT_EQ(read.preprocess.split_max_extra_m, def.preprocess.split_max_extra_m);
   EXPECT_EQ(read.preprocess.split_min_step_m, def.preprocess.split_min_step_m);
@@ -85,6 +86,7 @@ TEST(DetectorConfigYamlTest, ErrorsNameTheKey) {
   ExpectKeyError("preprocess: {roi_gamma: 0.4}\n", "preprocess.roi_gamma");
   ExpectKeyError("leg_fit: {max_iterations: many}\n", "leg_fit.max_iterations");
   ExpectKeyError("evidence: {min_confidence: 1.5}\n", "evidence.min_confidence");
+  ExpectKeyError("evidence: {overlap_margin_m: -0.1}\n", "evidence.overlap_margin_m");
   ExpectKeyError("evidence: {occluded_credit: -0.1}\n", "evidence.occluded_credit");
   ExpectKeyError("model_match: {gamma_sum_m: .nan}\n", "model_match.gamma_sum_m");
   // The split and fit-tolerance keys: impossible values and wrong types.
