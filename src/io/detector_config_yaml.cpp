@@ -18,6 +18,7 @@ void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
   f.Read("split_max_extra_m", c.split_max_extra_m);
   f.Read("split_min_step_m", c.split_min_step_m);
   f.Read("split_noise_steps", c.split_noise_steps);
+  f.Read("join_noise_breaks", c.join_noise_breaks);
   f.RejectUnknown();
 }
 

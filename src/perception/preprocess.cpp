@@ -200,6 +200,29 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
       out.split_candidates += add_candidate(MakeSpan(out.points, *k, span.end), s, 2);
     }
   }
+  // The reverse: range noise comparable to the beam spacing (20 mm at half a metre) breaks one
+  // leg into neighbouring fragments, each too narrow to show the leg's width. Runs of
+  // neighbouring clusters whose breaks are no deeper than the noise explains (the split step)
+  // and no longer than the missing beams a cluster tolerates are offered whole as well, when
+  // the whole fits a leg; the fragments stay candidates too, the evidence decides.
+  auto noise_break = [&](std::size_t a, std::size_t b) {
+    const ScanPoint& p = out.points[a];
+    const ScanPoint& q = out.points[b];
+    return std::abs(q.beam - p.beam) - 1 <= config.cluster_max_missing_beams &&
+           std::abs(q.range - p.range) <= split_step;
+  };
+  for (std::size_t si = 0; config.join_noise_breaks && si + 1 < out.spans.size(); ++si) {
+    const ClusterSpan& first = out.spans[si];
+    if (T_lidar_preset && (first.centroid - T_lidar_preset->translation()).norm() > roi_radius) {
+      continue;
+    }
+    for (std::size_t sj = si + 1; sj < out.spans.size(); ++sj) {
+      if (!noise_break(out.spans[sj - 1].end - 1, out.spans[sj].begin)) break;
+      const ClusterSpan whole = MakeSpan(out.points, first.begin, out.spans[sj].end);
+      if (whole.extent_m > max_leg_extent + config.leg_extent_margin_m) break;
+      out.joined_candidates += add_candidate(whole, static_cast<int>(si), 2);
+    }
+  }
   return out;
 }
 

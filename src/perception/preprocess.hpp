@@ -48,6 +48,7 @@ struct PreprocessOutput {
   int trailing_removed = 0;         ///< points removed by the Eq. 1 filter
   double range_noise_m = 0.0;       ///< [m] the scan's range noise (EstimateRangeNoise; 0: unknown)
   int split_candidates = 0;         ///< candidates cut from wider clusters at a depth step
+  int joined_candidates = 0;        ///< candidates joined from fragments of one leg (noise breaks)
 };
 
 /// Ranges to points, skipping NaN, infinite, zero and out-of-[range_min, range_max] returns.

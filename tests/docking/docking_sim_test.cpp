@@ -2,6 +2,7 @@
 // estimate and camera images; the scores compare against the simulator's ground truth.
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -122,6 +123,24 @@ TEST(DockingSim, AisleTargetsOnBothSidesDockWithAShorterArea) {
       EXPECT_LT(std::abs(run.error_after_check.yaw), 0.005);
       EXPECT_GT(run.min_leg_clearance_m, 0.0) << target << " seed " << seed;
     }
+  }
+}
+
+TEST(DockingSim, AisleShelvesFarFromTheirMapPoseAreStillFound) {
+  // Seeds whose target drifted far from its map pose (the scenario allows 0.3 m / 0.17 rad):
+  // a detector preset gate of 0.4 m / 0.25 rad never returned the shelf on these, and the robot
+  // stood before its own guess of the docking area until it gave up (would_collide).
+  const Fixture f;
+  sim::Scenario s = f.Load("config/scenarios/warehouse_aisle.yaml");
+  for (const auto& [target, seed] :
+       {std::pair{104, 17u}, std::pair{104, 65u}, std::pair{204, 10u}, std::pair{204, 53u}}) {
+    s.target_shelf_id = target;
+    const DockingRun run = RunDocking(s, f.models, Method::kContinuous, seed, RunConfig{});
+    ASSERT_TRUE(run.outcome.ok()) << target << " seed " << seed << ": " << run.outcome.reason;
+    EXPECT_LT(std::abs(run.error_after_check.x), 0.002);
+    EXPECT_LT(std::abs(run.error_after_check.y), 0.002);
+    EXPECT_LT(std::abs(run.error_after_check.yaw), 0.005);
+    EXPECT_GT(run.min_leg_clearance_m, 0.0) << target << " seed " << seed;
   }
 }
 

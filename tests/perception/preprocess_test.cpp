@@ -183,5 +183,58 @@ TEST(PreprocessTest, SplitCutsALegOutOfAPersonsLegTouchingIt) {
   EXPECT_EQ(scenes, 50);
 }
 
+// 20 mm range noise at half a metre, where beams are 3 mm apart, breaks a 40 mm leg into
+// fragments; joining noise breaks offers the whole leg again. A person's leg 2 cm beside the
+// shelf leg is no fragment of it: the two together never make a candidate.
+TEST(PreprocessTest, JoiningNoiseBreaksGivesBackTheWholeLeg) {
+  const auto models = testing::PaperModels();
+  const Eigen::Vector2d leg(0.52, 0.0);  // centre of a 40 mm square post, face-on
+  const double expected_width = 0.04;    // [m] its silhouette across the view
+  sim::LidarConfig lidar;
+  lidar.range_noise_sigma_m = 0.02;
+  PreprocessConfig no_join;
+  no_join.join_noise_breaks = false;
+  // The widest candidate within 3 cm of the leg's front face, as a width across the view [m].
+  const Eigen::Vector2d face(leg.x() - 0.02, 0.0);
+  auto widest_near_leg = [&](const PreprocessOutput& out) {
+    double widest = 0.0;
+    for (const Cluster& c : out.candidates) {
+      if ((c.centroid - face).norm() > 0.03) continue;
+      const double span = std::abs(c.points.back().angle - c.points.front().angle);
+      widest = std::max(widest, c.centroid.norm() * span);
+    }
+    return widest;
+  };
+  int fragmented = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    sim::World world;
+    testing::AddRoom(world);
+    world.AddSquarePost(geometry::Pose2(leg.x(), leg.y(), 0.0), 0.04);
+    world.AddRoundPost(Eigen::Vector2d(0.60, 0.13), 0.06);  // a person's leg beside it
+    const geometry::LaserScan scan = testing::SimScan(world, {}, seed, lidar);
+    const auto points = ScanToPoints(scan);
+    const PreprocessOutput off =
+        Preprocess(points, scan.angle_increment, std::nullopt, models, no_join);
+    const PreprocessOutput on =
+        Preprocess(points, scan.angle_increment, std::nullopt, models, PreprocessConfig{});
+    EXPECT_EQ(off.joined_candidates, 0);
+    // Joined or not, no candidate spans the shelf leg and the person's leg (0.09 m apart).
+    for (const Cluster& c : on.candidates) {
+      EXPECT_LT(c.extent_m, models[1].leg.Extent() + PreprocessConfig{}.leg_extent_margin_m + 1e-9);
+    }
+    const double w_off = widest_near_leg(off);
+    const double w_on = widest_near_leg(on);
+    EXPECT_GE(w_on, w_off) << "seed " << seed;  // joining only adds candidates
+    if (w_off < expected_width - 0.012) {
+      // Fragmented: the joined candidate is within a beam and a half of the leg's width.
+      ++fragmented;
+      EXPECT_GE(on.joined_candidates, 1) << "seed " << seed;
+      EXPECT_GT(w_on, expected_width - 0.012) << "seed " << seed;
+    }
+  }
+  // The noise must fragment the leg in a good share of these scans for the test to mean anything.
+  EXPECT_GE(fragmented, 5);
+}
+
 }  // namespace
 }  // namespace shelfdock::perception
