@@ -13,6 +13,7 @@ void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
   f.Read("trailing_min_angle_rad", c.trailing_min_angle_rad);
   f.Read("trailing_min_jump_m", c.trailing_min_jump_m);
   f.Read("leg_extent_margin_m", c.leg_extent_margin_m);
+  f.Read("leg_extent_noise_sigmas", c.leg_extent_noise_sigmas);
   f.Read("min_points", c.min_points);
   f.Read("min_point_fraction", c.min_point_fraction);
   f.Read("split_max_extra_m", c.split_max_extra_m);

@@ -18,6 +18,8 @@ struct PreprocessConfig {
   double trailing_min_angle_rad = 0.17;  ///< [rad] Eq. 1: beta below this marks a trailing point
   double trailing_min_jump_m = 0.04;     ///< [m] depth jumps below this are noise, not trailing
   double leg_extent_margin_m = 0.04;     ///< [m] a leg cluster may exceed the leg diagonal by this
+  double leg_extent_noise_sigmas = 3.0;  ///< [-] or by this many times the scan's range noise
+                                         ///< (times sqrt 2, a difference of two ranges), if more
   int min_points = 1;                    ///< [-] fewest points of a leg cluster at any range
   double min_point_fraction = 0.3;       ///< [-] of the beams expected across the smallest leg
   double split_max_extra_m = 0.25;  ///< [m] a cluster up to this much wider than a leg is split

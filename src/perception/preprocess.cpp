@@ -113,17 +113,23 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad
   return removed;
 }
 
+double MaxLegExtent(const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config,
+                    double range_noise_m) {
+  double max_extent = 0.0;
+  for (const auto& m : models) max_extent = std::max(max_extent, m.leg.Extent());
+  // At 20 mm range noise the four returns of a 40 mm leg seen corner-on spread over 0.1 m in
+  // depth: a fixed margin alone threw such legs away (eval-layouts, 20 mm classes).
+  return max_extent + std::max(config.leg_extent_margin_m,
+                               config.leg_extent_noise_sigmas * std::sqrt(2.0) * range_noise_m);
+}
+
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
                  double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
-                 const PreprocessConfig& config) {
+                 const PreprocessConfig& config, double range_noise_m) {
   if (num_points == 0 || models.empty()) return false;
-  double max_extent = 0.0;
   double min_width = models.front().leg.width_m;
-  for (const auto& m : models) {
-    max_extent = std::max(max_extent, m.leg.Extent());
-    min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
-  }
-  if (extent_m > max_extent + config.leg_extent_margin_m) return false;
+  for (const auto& m : models) min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
+  if (extent_m > MaxLegExtent(models, config, range_noise_m)) return false;
   // Beams expected across the smallest leg at this range: a short-range cluster of one or two
   // points is noise or a mixed point, not a leg.
   const double spacing = std::max(centroid.norm() * std::abs(angle_increment_rad), 1e-6);
@@ -131,12 +137,6 @@ bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t n
   const int needed = std::max(config.min_points,
                               static_cast<int>(std::floor(config.min_point_fraction * expected)));
   return static_cast<int>(num_points) >= needed;
-}
-
-bool FitsLegSize(const Cluster& cluster, double angle_increment_rad,
-                 const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config) {
-  return FitsLegSize(cluster.centroid, cluster.extent_m, cluster.points.size(), angle_increment_rad,
-                     models, config);
 }
 
 PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_increment_rad,
@@ -161,14 +161,14 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   // pieces).
   out.spans = ClusterSpans(out.points, angle_increment_rad, config);
   out.range_noise_m = EstimateRangeNoise(out.points, out.spans).sigma_m;
-  double max_leg_extent = 0.0;
-  for (const auto& m : models) max_leg_extent = std::max(max_leg_extent, m.leg.Extent());
+  const double max_leg_extent = MaxLegExtent(models, config, out.range_noise_m);
   const double split_step = std::max(config.split_min_step_m,
                                      config.split_noise_steps * std::sqrt(2.0) * out.range_noise_m);
   // `piece` (a span or part of span si) as a candidate, when it has min_points and fits a leg.
   auto add_candidate = [&](const ClusterSpan& piece, int si, std::size_t min_points) {
     if (piece.size() < min_points || !FitsLegSize(piece.centroid, piece.extent_m, piece.size(),
-                                                  angle_increment_rad, models, config)) {
+                                                  angle_increment_rad, models, config,
+                                                  out.range_noise_m)) {
       return false;
     }
     Cluster c;
@@ -190,7 +190,7 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     if (add_candidate(span, static_cast<int>(si), 1)) continue;
     // Too wide for a leg, but not by much: a leg with something touching it (a person's leg,
     // a box) is cut out at the strongest depth step, when that step stands out of the noise.
-    if (span.extent_m > max_leg_extent + config.leg_extent_margin_m + config.split_max_extra_m) {
+    if (span.extent_m > max_leg_extent + config.split_max_extra_m) {
       continue;
     }
     // A piece needs two points: one return beside a step is as often a mixed point.
@@ -219,7 +219,7 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     for (std::size_t sj = si + 1; sj < out.spans.size(); ++sj) {
       if (!noise_break(out.spans[sj - 1].end - 1, out.spans[sj].begin)) break;
       const ClusterSpan whole = MakeSpan(out.points, first.begin, out.spans[sj].end);
-      if (whole.extent_m > max_leg_extent + config.leg_extent_margin_m) break;
+      if (whole.extent_m > max_leg_extent) break;
       out.joined_candidates += add_candidate(whole, static_cast<int>(si), 2);
     }
   }

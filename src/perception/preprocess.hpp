@@ -75,12 +75,17 @@ double TrailingAngle(double range_far_m, double range_near_m, double alpha_rad);
 int RemoveTrailingPoints(std::vector<ScanPoint>& points, double angle_increment_rad,
                          const PreprocessConfig& config);
 
-/// True when a cluster's extent and point count fit a leg of some model at its range.
+/// The widest a leg cluster may be [m]: the largest leg diagonal of `models` plus
+/// leg_extent_margin_m, or plus leg_extent_noise_sigmas * sqrt 2 * range_noise_m when that is
+/// more (range noise stretches a leg's returns along the beams).
+double MaxLegExtent(const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config,
+                    double range_noise_m);
+
+/// True when a cluster's extent and point count fit a leg of some model at its range, in a
+/// scan whose range noise is range_noise_m.
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
                  double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
-                 const PreprocessConfig& config);
-bool FitsLegSize(const Cluster& cluster, double angle_increment_rad,
-                 const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config);
+                 const PreprocessConfig& config, double range_noise_m);
 
 /// The whole of paper 3.1. With a preset shelf pose, only clusters whose centroid lies within
 /// roi_gamma * R of the preset centre are kept.

@@ -35,6 +35,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.preprocess.trailing_min_jump_m = -0.01; }},
     {"leg_extent_margin", "preprocess.leg_extent_margin_m",
      [](auto& c) { c.preprocess.leg_extent_margin_m = -0.01; }},
+    {"leg_extent_noise", "preprocess.leg_extent_noise_sigmas",
+     [](auto& c) { c.preprocess.leg_extent_noise_sigmas = -1.0; }},
     {"min_points", "preprocess.min_points", [](auto& c) { c.preprocess.min_points = 0; }},
     {"min_point_fraction_negative", "preprocess.min_point_fraction",
      [](auto& c) { c.preprocess.min_point_fraction = -0.1; }},

@@ -218,9 +218,14 @@ TEST(PreprocessTest, JoiningNoiseBreaksGivesBackTheWholeLeg) {
     const PreprocessOutput on =
         Preprocess(points, scan.angle_increment, std::nullopt, models, PreprocessConfig{});
     EXPECT_EQ(off.joined_candidates, 0);
-    // Joined or not, no candidate spans the shelf leg and the person's leg (0.09 m apart).
+    // Joined or not, no candidate holds returns of both the shelf leg and the person's leg.
     for (const Cluster& c : on.candidates) {
-      EXPECT_LT(c.extent_m, models[1].leg.Extent() + PreprocessConfig{}.leg_extent_margin_m + 1e-9);
+      const auto near = [&c](const Eigen::Vector2d& centre, double radius) {
+        return std::any_of(c.points.begin(), c.points.end(), [&](const ScanPoint& q) {
+          return (q.p - centre).norm() < radius;
+        });
+      };
+      EXPECT_FALSE(near(leg, 0.045) && near(Eigen::Vector2d(0.60, 0.13), 0.075)) << "seed " << seed;
     }
     const double w_off = widest_near_leg(off);
     const double w_on = widest_near_leg(on);
@@ -234,6 +239,55 @@ TEST(PreprocessTest, JoiningNoiseBreaksGivesBackTheWholeLeg) {
   }
   // The noise must fragment the leg in a good share of these scans for the test to mean anything.
   EXPECT_GE(fragmented, 5);
+}
+
+TEST(PreprocessTest, RangeNoiseWidensTheLegExtentItAllows) {
+  const auto models = testing::PaperModels();
+  const double diagonal = models[1].leg.Extent();  // 40 mm square leg: 57 mm
+  PreprocessConfig config;
+  EXPECT_DOUBLE_EQ(MaxLegExtent(models, config, 0.0), diagonal + config.leg_extent_margin_m);
+  EXPECT_DOUBLE_EQ(MaxLegExtent(models, config, 0.02),
+                   diagonal + config.leg_extent_noise_sigmas * std::sqrt(2.0) * 0.02);
+  // A 40 mm square leg seen corner-on at 1.2 m under 30 mm range noise: its returns spread in
+  // depth over the leg's diagonal and the noise. It stays a candidate whenever its returns are
+  // one cluster, also in the scans where they spread past the fixed margin.
+  const Eigen::Vector2d leg(1.2, 0.2);
+  sim::LidarConfig lidar;
+  lidar.range_noise_sigma_m = 0.03;
+  PreprocessConfig fixed_margin;
+  fixed_margin.leg_extent_noise_sigmas = 0.0;
+  int wide = 0;
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    sim::World world;
+    testing::AddRoom(world);
+    const double view = std::atan2(leg.y(), leg.x());
+    world.AddSquarePost(geometry::Pose2(leg.x(), leg.y(), view + 0.25 * M_PI), 0.04);
+    const geometry::LaserScan scan = testing::SimScan(world, {}, seed, lidar);
+    const auto points = ScanToPoints(scan);
+    const PreprocessOutput out =
+        Preprocess(points, scan.angle_increment, std::nullopt, models, config);
+    const PreprocessOutput fixed =
+        Preprocess(points, scan.angle_increment, std::nullopt, models, fixed_margin);
+    // The leg's returns, as the clustering cut them.
+    const auto it = std::find_if(out.spans.begin(), out.spans.end(), [&](const ClusterSpan& s) {
+      return (s.centroid - leg).norm() < 0.06 && s.size() >= 2;
+    });
+    if (it == out.spans.end() || it->extent_m > MaxLegExtent(models, config, out.range_noise_m)) {
+      continue;  // fragmented or joined to a mixed point: not what this test is about
+    }
+    auto has_leg = [&](const PreprocessOutput& o) {
+      return std::any_of(o.candidates.begin(), o.candidates.end(), [&](const Cluster& c) {
+        return (c.centroid - leg).norm() < 0.06 && c.points.size() == it->size();
+      });
+    };
+    EXPECT_TRUE(has_leg(out)) << "seed " << seed;
+    if (it->extent_m > diagonal + config.leg_extent_margin_m) {
+      ++wide;
+      EXPECT_FALSE(has_leg(fixed)) << "seed " << seed;  // the fixed margin loses it
+    }
+  }
+  // The noise must stretch the leg past the fixed margin in some of these scans.
+  EXPECT_GE(wide, 3);
 }
 
 }  // namespace
