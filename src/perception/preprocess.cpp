@@ -166,9 +166,9 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
                                      config.split_noise_steps * std::sqrt(2.0) * out.range_noise_m);
   // `piece` (a span or part of span si) as a candidate, when it has min_points and fits a leg.
   auto add_candidate = [&](const ClusterSpan& piece, int si, std::size_t min_points) {
-    if (piece.size() < min_points || !FitsLegSize(piece.centroid, piece.extent_m, piece.size(),
-                                                  angle_increment_rad, models, config,
-                                                  out.range_noise_m)) {
+    if (piece.size() < min_points ||
+        !FitsLegSize(piece.centroid, piece.extent_m, piece.size(), angle_increment_rad, models,
+                     config, out.range_noise_m)) {
       return false;
     }
     Cluster c;

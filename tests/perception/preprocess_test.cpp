@@ -221,9 +221,8 @@ TEST(PreprocessTest, JoiningNoiseBreaksGivesBackTheWholeLeg) {
     // Joined or not, no candidate holds returns of both the shelf leg and the person's leg.
     for (const Cluster& c : on.candidates) {
       const auto near = [&c](const Eigen::Vector2d& centre, double radius) {
-        return std::any_of(c.points.begin(), c.points.end(), [&](const ScanPoint& q) {
-          return (q.p - centre).norm() < radius;
-        });
+        return std::any_of(c.points.begin(), c.points.end(),
+                           [&](const ScanPoint& q) { return (q.p - centre).norm() < radius; });
       };
       EXPECT_FALSE(near(leg, 0.045) && near(Eigen::Vector2d(0.60, 0.13), 0.075)) << "seed " << seed;
     }
