@@ -18,8 +18,12 @@ void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
   f.Read("min_point_fraction", c.min_point_fraction);
   f.Read("split_max_extra_m", c.split_max_extra_m);
   f.Read("split_min_step_m", c.split_min_step_m);
+  f.Read("split_end_pieces", c.split_end_pieces);
   f.Read("split_noise_steps", c.split_noise_steps);
   f.Read("join_noise_breaks", c.join_noise_breaks);
+  f.Read("surface_tolerance_m", c.surface_tolerance_m);
+  f.Read("surface_noise_sigmas", c.surface_noise_sigmas);
+  f.Read("surface_max_step_m", c.surface_max_step_m);
   f.RejectUnknown();
 }
 

@@ -16,6 +16,9 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(p.trailing_min_jump_m >= 0.0, "preprocess.trailing_min_jump_m", ">= 0");
   k.Check(p.leg_extent_margin_m >= 0.0, "preprocess.leg_extent_margin_m", ">= 0");
   k.Check(p.leg_extent_noise_sigmas >= 0.0, "preprocess.leg_extent_noise_sigmas", ">= 0");
+  k.Check(p.surface_tolerance_m >= 0.0, "preprocess.surface_tolerance_m", ">= 0");
+  k.Check(p.surface_noise_sigmas >= 0.0, "preprocess.surface_noise_sigmas", ">= 0");
+  k.Check(p.surface_max_step_m >= 0.0, "preprocess.surface_max_step_m", ">= 0");
   k.Check(p.min_points >= 1, "preprocess.min_points", ">= 1");
   k.Check(p.split_max_extra_m >= 0.0, "preprocess.split_max_extra_m", ">= 0 (0: never split)");
   k.Check(p.split_min_step_m > 0.0, "preprocess.split_min_step_m", "> 0");

@@ -22,15 +22,22 @@ struct PreprocessConfig {
                                          ///< (times sqrt 2, a difference of two ranges), if more
   int min_points = 1;                    ///< [-] fewest points of a leg cluster at any range
   double min_point_fraction = 0.3;       ///< [-] of the beams expected across the smallest leg
-  double split_max_extra_m = 0.25;  ///< [m] a cluster up to this much wider than a leg is split
-                                    ///< at its strongest depth step (a leg with something
-                                    ///< touching it); 0: never split
-  double split_min_step_m = 0.03;   ///< [m] smallest depth step split at
-  double split_noise_steps = 3.0;   ///< [-] and at least this many times the scan's range noise
-                                    ///< (times sqrt 2: a step is a difference of two ranges)
-  bool join_noise_breaks = true;    ///< neighbouring clusters whose breaks the range noise explains
-                                    ///< (no deeper than the split step) are offered whole as a
-                                    ///< leg candidate too, when the whole fits a leg
+  double split_max_extra_m = 0.25;    ///< [m] a cluster up to this much wider than a leg is split
+                                      ///< at its strongest depth step (a leg with something
+                                      ///< touching it); 0: never (end pieces: below)
+  double split_min_step_m = 0.03;     ///< [m] smallest depth step split at
+  bool split_end_pieces = true;       ///< wider clusters: a leg-sized piece at either end standing
+                                      ///< a split step in front of the rest is a candidate too
+  double split_noise_steps = 3.0;     ///< [-] and at least this many times the scan's range noise
+                                      ///< (times sqrt 2: a step is a difference of two ranges)
+  double surface_tolerance_m = 0.02;  ///< [m] a piece within this of the line through its beam
+                                      ///< neighbours continues their surface: not a leg
+  double surface_noise_sigmas = 3.0;  ///< [-] or within this many times the range noise, if more
+  double surface_max_step_m = 0.25;   ///< [m] farthest beam neighbour taken for the same surface
+                                      ///< (0: the rule is off)
+  bool join_noise_breaks = true;  ///< neighbouring clusters whose breaks the range noise explains
+                                  ///< (no deeper than the split step) are offered whole as a
+                                  ///< leg candidate too, when the whole fits a leg
 };
 
 /// Paper 3.2: pruned rectangle / right-triangle search over cluster centres.

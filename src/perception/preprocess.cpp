@@ -5,6 +5,7 @@
 
 #include "perception/depth_step.hpp"
 #include "perception/range_noise.hpp"
+#include "perception/surface_continuation.hpp"
 
 namespace shelfdock::perception {
 
@@ -164,12 +165,26 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   const double max_leg_extent = MaxLegExtent(models, config, out.range_noise_m);
   const double split_step = std::max(config.split_min_step_m,
                                      config.split_noise_steps * std::sqrt(2.0) * out.range_noise_m);
+  const double surface_tolerance =
+      std::max(config.surface_tolerance_m, config.surface_noise_sigmas * out.range_noise_m);
   // `piece` (a span or part of span si) as a candidate, when it has min_points and fits a leg.
   auto add_candidate = [&](const ClusterSpan& piece, int si, std::size_t min_points) {
     if (piece.size() < min_points ||
         !FitsLegSize(piece.centroid, piece.extent_m, piece.size(), angle_increment_rad, models,
                      config, out.range_noise_m)) {
       return false;
+    }
+    if (ContinuesSurface(out.points, piece.begin, piece.end, config.surface_max_step_m,
+                         max_leg_extent, surface_tolerance)) {
+      ++out.surface_pieces;
+      return false;
+    }
+    // An end piece and a split piece may be the same points: one candidate for them.
+    for (auto it = out.candidates.rbegin(); it != out.candidates.rend() && it->span == si; ++it) {
+      if (it->points.size() == piece.size() &&
+          it->points.front().beam == out.points[piece.begin].beam) {
+        return false;
+      }
     }
     Cluster c;
     c.points.assign(out.points.begin() + static_cast<std::ptrdiff_t>(piece.begin),
@@ -188,14 +203,25 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     ++out.clusters;
     out.roi_points += static_cast<int>(span.size());
     if (add_candidate(span, static_cast<int>(si), 1)) continue;
+    const int s = static_cast<int>(si);
+    // A leg may stand just in front of a wall or a box, closer to it than the break distance:
+    // a leg-sized piece at either end of the cluster, a split step in front of the rest.
+    if (config.split_end_pieces) {
+      const EndPieces ends = FrontEndPieces(out.points, span, max_leg_extent, split_step);
+      if (ends.front_end) {
+        out.split_candidates +=
+            add_candidate(MakeSpan(out.points, span.begin, *ends.front_end), s, 2);
+      }
+      if (ends.back_begin) {
+        out.split_candidates +=
+            add_candidate(MakeSpan(out.points, *ends.back_begin, span.end), s, 2);
+      }
+    }
     // Too wide for a leg, but not by much: a leg with something touching it (a person's leg,
     // a box) is cut out at the strongest depth step, when that step stands out of the noise.
-    if (span.extent_m > max_leg_extent + config.split_max_extra_m) {
-      continue;
-    }
+    if (span.extent_m > max_leg_extent + config.split_max_extra_m) continue;
     // A piece needs two points: one return beside a step is as often a mixed point.
     if (const auto k = StrongestDepthStep(out.points, span, split_step)) {
-      const int s = static_cast<int>(si);
       out.split_candidates += add_candidate(MakeSpan(out.points, span.begin, *k), s, 2);
       out.split_candidates += add_candidate(MakeSpan(out.points, *k, span.end), s, 2);
     }

@@ -49,6 +49,7 @@ struct PreprocessOutput {
   double range_noise_m = 0.0;       ///< [m] the scan's range noise (EstimateRangeNoise; 0: unknown)
   int split_candidates = 0;         ///< candidates cut from wider clusters at a depth step
   int joined_candidates = 0;        ///< candidates joined from fragments of one leg (noise breaks)
+  int surface_pieces = 0;           ///< leg-sized pieces dropped as continuing a surface
 };
 
 /// Ranges to points, skipping NaN, infinite, zero and out-of-[range_min, range_max] returns.

@@ -52,6 +52,10 @@ TEST(DetectorConfigYamlTest, ShippedFileHoldsTheStructDefaults) {
   EXPECT_EQ(read.preprocess.split_noise_steps, def.preprocess.split_noise_steps);
   EXPECT_EQ(read.preprocess.join_noise_breaks, def.preprocess.join_noise_breaks);
   EXPECT_EQ(read.preprocess.leg_extent_noise_sigmas, def.preprocess.leg_extent_noise_sigmas);
+  EXPECT_EQ(read.preprocess.split_end_pieces, def.preprocess.split_end_pieces);
+  EXPECT_EQ(read.preprocess.surface_tolerance_m, def.preprocess.surface_tolerance_m);
+  EXPECT_EQ(read.preprocess.surface_noise_sigmas, def.preprocess.surface_noise_sigmas);
+  EXPECT_EQ(read.preprocess.surface_max_step_m, def.preprocess.surface_max_step_m);
   EXPECT_EQ(read.evidence.fit_reference_sigma_m, def.evidence.fit_reference_sigma_m);
   EXPECT_EQ(read.evidence.max_fit_tolerance_factor, def.evidence.max_fit_tolerance_factor);
 }
@@ -70,13 +74,19 @@ TEST(DetectorConfigYamlTest, ReadsTheSplitAndFitToleranceKeys) {
   const auto c = ReadDetectorConfig(WriteTemp(
       "split.yaml",
       "preprocess: {split_max_extra_m: 0.0, split_min_step_m: 0.045, split_noise_steps: 4.5,\n"
-      "             join_noise_breaks: false, leg_extent_noise_sigmas: 1.5}\n"
+      "             join_noise_breaks: false, leg_extent_noise_sigmas: 1.5,\n"
+      "             split_end_pieces: false, surface_tolerance_m: 0.03,\n"
+      "             surface_noise_sigmas: 2.5, surface_max_step_m: 0.4}\n"
       "evidence: {fit_reference_sigma_m: 0.02, max_fit_tolerance_factor: 2.5}\n"));
   EXPECT_DOUBLE_EQ(c.preprocess.split_max_extra_m, 0.0);
   EXPECT_DOUBLE_EQ(c.preprocess.split_min_step_m, 0.045);
   EXPECT_DOUBLE_EQ(c.preprocess.split_noise_steps, 4.5);
   EXPECT_FALSE(c.preprocess.join_noise_breaks);
   EXPECT_DOUBLE_EQ(c.preprocess.leg_extent_noise_sigmas, 1.5);
+  EXPECT_FALSE(c.preprocess.split_end_pieces);
+  EXPECT_DOUBLE_EQ(c.preprocess.surface_tolerance_m, 0.03);
+  EXPECT_DOUBLE_EQ(c.preprocess.surface_noise_sigmas, 2.5);
+  EXPECT_DOUBLE_EQ(c.preprocess.surface_max_step_m, 0.4);
   EXPECT_DOUBLE_EQ(c.evidence.fit_reference_sigma_m, 0.02);
   EXPECT_DOUBLE_EQ(c.evidence.max_fit_tolerance_factor, 2.5);
   // Untouched keys of the same sections keep their defaults.

@@ -95,5 +95,33 @@ TEST(DepthStepTest, LargestOfTwoStepsIsChosen) {
   EXPECT_EQ(*k, 10u);
 }
 
+// A leg 4 cm in front of a wall at 2 m, closer than the break distance: beams 0-2 on the leg
+// (2.00 m), 3-19 on the wall (2.06 m). The leg is the front end piece, ending at index 3; no
+// back piece (the wall's last points step nowhere). Mirrored, it is the back piece from 17.
+TEST(DepthStepTest, LegInFrontOfAWallIsAnEndPiece) {
+  std::vector<ScanPoint> pts;
+  for (int b = 0; b < 20; ++b) pts.push_back(At(b, b < 3 ? 2.00 : 2.06));
+  const double max_extent = 0.1;
+  EndPieces ends = FrontEndPieces(pts, Span(0, 20), max_extent, 0.03);
+  ASSERT_TRUE(ends.front_end.has_value());
+  EXPECT_EQ(*ends.front_end, 3u);
+  EXPECT_FALSE(ends.back_begin.has_value());
+  for (int b = 0; b < 20; ++b) pts[b] = At(b, b >= 17 ? 2.00 : 2.06);
+  ends = FrontEndPieces(pts, Span(0, 20), max_extent, 0.03);
+  EXPECT_FALSE(ends.front_end.has_value());
+  ASSERT_TRUE(ends.back_begin.has_value());
+  EXPECT_EQ(*ends.back_begin, 17u);
+  // A step away from the sensor at the end (the wall nearer than what ends it) is no piece in
+  // front, and neither is a step below the threshold.
+  for (int b = 0; b < 20; ++b) pts[b] = At(b, b >= 17 ? 2.12 : 2.06);
+  EXPECT_FALSE(FrontEndPieces(pts, Span(0, 20), max_extent, 0.03).back_begin.has_value());
+  for (int b = 0; b < 20; ++b) pts[b] = At(b, b >= 17 ? 2.04 : 2.06);
+  EXPECT_FALSE(FrontEndPieces(pts, Span(0, 20), max_extent, 0.03).back_begin.has_value());
+  // A piece wider than max_extent is no leg: 6 beams at 2 m span about 6 cm.
+  for (int b = 0; b < 20; ++b) pts[b] = At(b, b < 6 ? 2.00 : 2.06);
+  EXPECT_TRUE(FrontEndPieces(pts, Span(0, 20), max_extent, 0.03).front_end.has_value());
+  EXPECT_FALSE(FrontEndPieces(pts, Span(0, 20), 0.05, 0.03).front_end.has_value());
+}
+
 }  // namespace
 }  // namespace shelfdock::perception

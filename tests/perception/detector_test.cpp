@@ -402,6 +402,7 @@ constexpr PersonsLegPlacement kPersonsLegPlacements[] = {
 DetectorConfig NoSplit() {
   DetectorConfig config;
   config.preprocess.split_max_extra_m = 0.0;
+  config.preprocess.split_end_pieces = false;
   return config;
 }
 

@@ -142,6 +142,7 @@ TEST(PreprocessTest, SplitCutsALegOutOfAPersonsLegTouchingIt) {
   lidar.range_noise_sigma_m = 0.003;
   PreprocessConfig no_split;
   no_split.split_max_extra_m = 0.0;
+  no_split.split_end_pieces = false;
   struct Placement {
     double depth;  ///< [m] person's leg's nearest surface minus the leg's front face
     double gap;    ///< [beams] between the two silhouettes' edges
@@ -181,6 +182,50 @@ TEST(PreprocessTest, SplitCutsALegOutOfAPersonsLegTouchingIt) {
     }
   }
   EXPECT_EQ(scenes, 50);
+}
+
+// A leg 2 cm in front of a box 0.6 m wide, at its end: the break distance joins them, and the
+// cluster is far wider than a leg with something touching it. The leg is cut off at the step
+// to the box behind it (split_end_pieces); without that rule it is lost.
+TEST(PreprocessTest, EndPieceCutsALegOffTheBoxBehindIt) {
+  constexpr double kNear = 0.03;  // [m]
+  const auto models = testing::PaperModels();
+  sim::LidarConfig lidar;
+  lidar.range_noise_sigma_m = 0.005;
+  PreprocessConfig no_ends;
+  no_ends.split_end_pieces = false;
+  int scenes = 0;
+  for (const double side : {1.0, -1.0}) {
+    // The box's near face at x = 2.06, from y = 0 away from the leg over 0.6 m; the leg (back
+    // face at x = 2.04) sticks out 1 cm past the box's end.
+    const Eigen::Vector2d leg(2.02, side * 0.01);
+    sim::Box box;
+    box.T_world_box = geometry::Pose2(2.11, side * 0.3, 0.0);
+    box.length_m = 0.1;
+    box.width_m = 0.6;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+      sim::World world;
+      testing::AddRoom(world);
+      world.AddSquarePost(geometry::Pose2(leg.x(), leg.y(), 0.0), 0.04);
+      world.AddBox(box);
+      const geometry::LaserScan scan = testing::SimScan(world, {}, seed, lidar);
+      const auto points = ScanToPoints(scan);
+      const auto nearest = [&](const PreprocessOutput& out) {
+        double best = std::numeric_limits<double>::infinity();
+        for (const Cluster& c : out.candidates) best = std::min(best, (c.centroid - leg).norm());
+        return best;
+      };
+      const std::string where = "side " + std::to_string(side) + " seed " + std::to_string(seed);
+      const PreprocessOutput off =
+          Preprocess(points, scan.angle_increment, std::nullopt, models, no_ends);
+      EXPECT_GT(nearest(off), kNear) << where;
+      const PreprocessOutput on =
+          Preprocess(points, scan.angle_increment, std::nullopt, models, PreprocessConfig{});
+      EXPECT_LT(nearest(on), kNear) << where;
+      ++scenes;
+    }
+  }
+  EXPECT_EQ(scenes, 20);
 }
 
 // 20 mm range noise at half a metre, where beams are 3 mm apart, breaks a 40 mm leg into
