@@ -17,6 +17,13 @@ constexpr double kAlpha = testing::kWlrAlpha;
 
 ScanPoint At(int beam, double range) { return testing::BeamPoint(beam, range); }
 
+// Distance from `leg` to the nearest leg candidate's centroid [m]; infinity without candidates.
+double NearestCandidate(const PreprocessOutput& out, const Eigen::Vector2d& leg) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Cluster& c : out.candidates) best = std::min(best, (c.centroid - leg).norm());
+  return best;
+}
+
 TEST(PreprocessTest, ScanToPointsSkipsInvalidReturns) {
   geometry::LaserScan scan;
   scan.angle_min = -0.5;
@@ -162,20 +169,15 @@ TEST(PreprocessTest, SplitCutsALegOutOfAPersonsLegTouchingIt) {
         world.AddRoundPost(person, 0.06);
         const geometry::LaserScan scan = testing::SimScan(world, {}, seed, lidar);
         const auto points = ScanToPoints(scan);
-        const auto nearest = [&](const PreprocessOutput& out) {
-          double best = std::numeric_limits<double>::infinity();
-          for (const Cluster& c : out.candidates) best = std::min(best, (c.centroid - leg).norm());
-          return best;
-        };
         const std::string where = "depth " + std::to_string(pl.depth) + " side " +
                                   std::to_string(side) + " seed " + std::to_string(seed);
         const PreprocessOutput off =
             Preprocess(points, scan.angle_increment, std::nullopt, models, no_split);
-        EXPECT_GT(nearest(off), kNear) << where;
+        EXPECT_GT(NearestCandidate(off, leg), kNear) << where;
         EXPECT_EQ(off.split_candidates, 0) << where;
         const PreprocessOutput on =
             Preprocess(points, scan.angle_increment, std::nullopt, models, PreprocessConfig{});
-        EXPECT_LT(nearest(on), kNear) << where;
+        EXPECT_LT(NearestCandidate(on, leg), kNear) << where;
         EXPECT_GE(on.split_candidates, 1) << where;
         ++scenes;
       }
@@ -210,18 +212,13 @@ TEST(PreprocessTest, EndPieceCutsALegOffTheBoxBehindIt) {
       world.AddBox(box);
       const geometry::LaserScan scan = testing::SimScan(world, {}, seed, lidar);
       const auto points = ScanToPoints(scan);
-      const auto nearest = [&](const PreprocessOutput& out) {
-        double best = std::numeric_limits<double>::infinity();
-        for (const Cluster& c : out.candidates) best = std::min(best, (c.centroid - leg).norm());
-        return best;
-      };
       const std::string where = "side " + std::to_string(side) + " seed " + std::to_string(seed);
       const PreprocessOutput off =
           Preprocess(points, scan.angle_increment, std::nullopt, models, no_ends);
-      EXPECT_GT(nearest(off), kNear) << where;
+      EXPECT_GT(NearestCandidate(off, leg), kNear) << where;
       const PreprocessOutput on =
           Preprocess(points, scan.angle_increment, std::nullopt, models, PreprocessConfig{});
-      EXPECT_LT(nearest(on), kNear) << where;
+      EXPECT_LT(NearestCandidate(on, leg), kNear) << where;
       ++scenes;
     }
   }
