@@ -129,7 +129,8 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
     return;
   }
   const perception::Detection& det = *chosen;
-  FuseShelf(obs, T_odom_lidar * det.T_lidar_shelf, T_odom_lidar, det.covariance,
+  // The fit's pose, which the covariance describes (the refined pose's heading tail was worse).
+  FuseShelf(obs, T_odom_lidar * det.FusionPose(), T_odom_lidar, det.covariance,
             det.model + " legs " + std::to_string(det.legs_used), cmd);
 }
 

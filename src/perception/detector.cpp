@@ -235,6 +235,9 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   const double reference =
       in.T_lidar_preset ? in.T_lidar_preset->yaw : std::atan2(d.T_lidar_shelf.y, d.T_lidar_shelf.x);
   d.T_lidar_shelf.yaw = ResolveHeading(d.T_lidar_shelf.yaw, reference, model.IsSquare());
+  geometry::Pose2 T_fit = fit->T_lidar_shelf;
+  T_fit.yaw = ResolveHeading(T_fit.yaw, d.T_lidar_shelf.yaw, model.IsSquare());
+  d.T_lidar_shelf_fit = T_fit;
   return h;
 }
 

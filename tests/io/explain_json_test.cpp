@@ -109,5 +109,20 @@ TEST(DetectionJson, StatsCarryTheRangeNoise) {
   EXPECT_EQ(none["stats"]["range_noise_m"].get<double>(), 0.0);
 }
 
+// Each detection carries the robust fit's pose beside the refined one, as the `fit` object, with
+// the values of Detection::T_lidar_shelf_fit (which the detector always sets).
+TEST(DetectionJson, DetectionsCarryTheFitsPose) {
+  const perception::Detector detector(testing::PaperModels());
+  const perception::DetectionResult result = detector.Detect(ExampleScan());
+  ASSERT_FALSE(result.detections.empty());
+  const perception::Detection& d = result.detections.front();
+  const nlohmann::json j = DetectionToJson(d);
+  ASSERT_TRUE(d.T_lidar_shelf_fit.has_value());
+  ASSERT_TRUE(j.contains("fit")) << j.dump();
+  EXPECT_DOUBLE_EQ(j["fit"]["x"].get<double>(), d.T_lidar_shelf_fit->x);
+  EXPECT_DOUBLE_EQ(j["fit"]["y"].get<double>(), d.T_lidar_shelf_fit->y);
+  EXPECT_DOUBLE_EQ(j["fit"]["yaw"].get<double>(), d.T_lidar_shelf_fit->yaw);
+}
+
 }  // namespace
 }  // namespace shelfdock::io

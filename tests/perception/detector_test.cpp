@@ -87,6 +87,13 @@ TEST(DetectorTest, FindsEveryModelAtAllDistancesAndHeadings) {
         worst_yaw = std::max(worst_yaw, e_y);
         EXPECT_LT(e_c, kCentreTol) << model.name << " standoff " << standoff << " yaw " << yaw;
         EXPECT_LT(e_y, kYawTol) << model.name << " standoff " << standoff << " yaw " << yaw;
+        // The robust fit's pose (the one the covariance describes) is as close to the truth,
+        // and its heading resolved the same way as the refined pose's (not a half turn off).
+        ASSERT_TRUE(d.T_lidar_shelf_fit.has_value());
+        EXPECT_LT(geometry::Distance(*d.T_lidar_shelf_fit, truth), kCentreTol) << model.name;
+        EXPECT_LT(std::abs(geometry::AngleDiff(d.T_lidar_shelf_fit->yaw, d.T_lidar_shelf.yaw)),
+                  kYawTol)
+            << model.name << " standoff " << standoff << " yaw " << yaw;
         // Heading convention without a preset: x axis away from the sensor.
         const double bearing_c = std::atan2(d.T_lidar_shelf.y, d.T_lidar_shelf.x);
         EXPECT_GE(std::cos(d.T_lidar_shelf.yaw - bearing_c), model.IsSquare() ? 0.7 : -1e-9);
