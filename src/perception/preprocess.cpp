@@ -126,11 +126,10 @@ double MaxLegExtent(const std::vector<geometry::ShelfModel>& models, const Prepr
 
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
                  double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
-                 const PreprocessConfig& config, double range_noise_m) {
-  if (num_points == 0 || models.empty()) return false;
+                 const PreprocessConfig& config, double max_extent_m) {
+  if (num_points == 0 || models.empty() || extent_m > max_extent_m) return false;
   double min_width = models.front().leg.width_m;
   for (const auto& m : models) min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
-  if (extent_m > MaxLegExtent(models, config, range_noise_m)) return false;
   // Beams expected across the smallest leg at this range: a short-range cluster of one or two
   // points is noise or a mixed point, not a leg.
   const double spacing = std::max(centroid.norm() * std::abs(angle_increment_rad), 1e-6);
@@ -171,12 +170,11 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   auto add_candidate = [&](const ClusterSpan& piece, int si, std::size_t min_points) {
     if (piece.size() < min_points ||
         !FitsLegSize(piece.centroid, piece.extent_m, piece.size(), angle_increment_rad, models,
-                     config, out.range_noise_m)) {
+                     config, max_leg_extent)) {
       return false;
     }
     if (ContinuesSurface(out.points, piece.begin, piece.end, config.surface_max_step_m,
                          max_leg_extent, surface_tolerance)) {
-      ++out.surface_pieces;
       return false;
     }
     // An end piece and a split piece may be the same points: one candidate for them.

@@ -49,7 +49,6 @@ struct PreprocessOutput {
   double range_noise_m = 0.0;       ///< [m] the scan's range noise (EstimateRangeNoise; 0: unknown)
   int split_candidates = 0;         ///< candidates cut from wider clusters at a depth step
   int joined_candidates = 0;        ///< candidates joined from fragments of one leg (noise breaks)
-  int surface_pieces = 0;           ///< leg-sized pieces dropped as continuing a surface
 };
 
 /// Ranges to points, skipping NaN, infinite, zero and out-of-[range_min, range_max] returns.
@@ -82,11 +81,11 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& points, double angle_increment_
 double MaxLegExtent(const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config,
                     double range_noise_m);
 
-/// True when a cluster's extent and point count fit a leg of some model at its range, in a
-/// scan whose range noise is range_noise_m.
+/// True when a cluster's extent is at most max_extent_m (MaxLegExtent of the scan) and its point
+/// count fits a leg of some model at its range.
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
                  double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
-                 const PreprocessConfig& config, double range_noise_m);
+                 const PreprocessConfig& config, double max_extent_m);
 
 /// The whole of paper 3.1. With a preset shelf pose, only clusters whose centroid lies within
 /// roi_gamma * R of the preset centre are kept.
