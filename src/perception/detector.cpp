@@ -50,7 +50,8 @@ struct LegFitCache {
       }
     }
     entries.push_back(
-        {cluster, &model.leg, FitLeg(clusters[cluster].points, model.leg, hint, config)});
+        {cluster, &model.leg,
+         FitLeg(clusters[cluster].points, model.leg, hint, config, clusters[cluster].edges)});
     return entries.back().fit;
   }
 };

@@ -5,17 +5,24 @@
 #include <Eigen/Geometry>
 
 #include "perception/leg_fit.hpp"
+#include "perception/silhouette_edges.hpp"
 
 namespace shelfdock::perception {
 namespace {
 
+// A leg's points and the edges of its outline the scan shows.
+struct LegRunPoints {
+  std::vector<ScanPoint> points;
+  SilhouetteEdges edges;
+};
+
 // The points of the leg expected at `predicted`: the run of consecutive points (beam order,
 // neighbours closer than gap_m) holding the point nearest to it, cut to search_radius_m. A box or
 // a post near the leg is another run and stays out; a run wider than the leg (something touching
-// it, merged) is no leg measurement at all: empty.
-std::vector<ScanPoint> LegRun(const std::vector<ScanPoint>& points,
-                              const Eigen::Vector2d& predicted, const geometry::LegModel& leg,
-                              const KnownLegsConfig& config) {
+// it, merged) is no leg measurement at all: empty. The run's outline edges count only when
+// nothing was cut from it.
+LegRunPoints LegRun(const std::vector<ScanPoint>& points, const Eigen::Vector2d& predicted,
+                    const geometry::LegModel& leg, const KnownLegsConfig& config) {
   std::size_t nearest = points.size();
   double best = config.search_radius_m;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -32,9 +39,12 @@ std::vector<ScanPoint> LegRun(const std::vector<ScanPoint>& points,
     ++last;
   }
   if ((points[last].p - points[first].p).norm() > leg.Extent() + config.size_margin_m) return {};
-  std::vector<ScanPoint> run;
+  LegRunPoints run;
   for (std::size_t i = first; i <= last; ++i) {
-    if ((points[i].p - predicted).norm() <= config.search_radius_m) run.push_back(points[i]);
+    if ((points[i].p - predicted).norm() <= config.search_radius_m) run.points.push_back(points[i]);
+  }
+  if (run.points.size() == last - first + 1) {
+    run.edges = FindSilhouetteEdges(points, points[first], points[last], config.gap_m);
   }
   return run;
 }
@@ -51,9 +61,10 @@ std::optional<KnownLegsResult> MeasureKnownLegs(const std::vector<ScanPoint>& po
   for (int k = 0; k < 4; ++k) {
     if (!use[static_cast<std::size_t>(k)]) continue;
     const Eigen::Vector2d predicted = T_lidar_shelf_prior * corners[static_cast<std::size_t>(k)];
-    const std::vector<ScanPoint> leg_points = LegRun(points, predicted, model.leg, config);
-    if (static_cast<int>(leg_points.size()) < config.min_points) continue;
-    const LegFitResult fit = FitLeg(leg_points, model.leg, T_lidar_shelf_prior.yaw, config.leg_fit);
+    const LegRunPoints run = LegRun(points, predicted, model.leg, config);
+    if (static_cast<int>(run.points.size()) < config.min_points) continue;
+    const LegFitResult fit =
+        FitLeg(run.points, model.leg, T_lidar_shelf_prior.yaw, config.leg_fit, run.edges);
     if (!fit.converged) continue;
     // The prior is good to a few millimetres here: a leg found farther off is something else.
     if ((fit.centre - predicted).norm() > config.max_offset_m) return std::nullopt;

@@ -23,6 +23,10 @@ struct LegRayCost {
   double prior_weight;
   double mid_cos, mid_sin;   // bearing of the silhouette's centre (between the outer beams)
   double silhouette_weight;  // range sigma / bearing sigma of that centre; 0: unknown
+  // Only one edge seen: the bearing of that edge relative to mid, and which side it bounds
+  // (-1 the smaller bearing, +1 the larger); 0: the centre term above.
+  int edge_side = 0;
+  double edge_rad = 0.0;
 
   int NumResiduals() const { return 2 * static_cast<int>(points->size()) + 3; }
 
@@ -46,20 +50,41 @@ struct LegRayCost {
     // point (no silhouette) the bias-corrected centroid.
     residual[2 * n] = T(prior_weight) * (c[0] - T(prior.x()));
     residual[2 * n + 1] = T(prior_weight) * (c[1] - T(prior.y()));
-    residual[2 * n + 2] = T(silhouette_weight) * SilhouetteMidBearing(c);
+    residual[2 * n + 2] = T(silhouette_weight) * SilhouetteResidual(c);
     return true;
   }
 
-  // Bearing of the predicted silhouette's centre relative to the measured one: half the sum
-  // of the bearings of its two outline tangents (a circle's centre; a box's extreme corners).
+  // The silhouette term's bearing error: of its centre (both edges seen, or neither), or of the
+  // one edge seen.
   template <typename T>
-  T SilhouetteMidBearing(const T* c) const {
+  T SilhouetteResidual(const T* c) const {
+    T lo, hi;
+    SilhouetteBearings(c, lo, hi);
+    if (edge_side < 0) return lo - T(edge_rad);
+    if (edge_side > 0) return hi - T(edge_rad);
+    return T(0.5) * (lo + hi);
+  }
+
+  // Bearings of the predicted silhouette's two outline tangents relative to the measured
+  // centre (a circle's tangents; a box's extreme corners).
+  template <typename T>
+  void SilhouetteBearings(const T* c, T& lo, T& hi) const {
     using std::atan2;
     auto bearing = [&](const T& x, const T& y) {
       return atan2(T(mid_cos) * y - T(mid_sin) * x, T(mid_cos) * x + T(mid_sin) * y);
     };
-    if (round) return bearing(c[0], c[1]);
-    T lo(1e9), hi(-1e9);
+    if (round) {
+      using std::asin;
+      using std::sqrt;
+      const T b = bearing(c[0], c[1]);
+      const T d = sqrt(c[0] * c[0] + c[1] * c[1]);
+      const T half = d > T(radius) ? asin(T(radius) / d) : T(0.5 * 3.141592653589793);
+      lo = b - half;
+      hi = b + half;
+      return;
+    }
+    lo = T(1e9);
+    hi = T(-1e9);
     for (const double sx : {-half_x, half_x}) {
       for (const double sy : {-half_y, half_y}) {
         const T b = bearing(c[0] + T(cos_a * sx - sin_a * sy), c[1] + T(sin_a * sx + cos_a * sy));
@@ -67,7 +92,6 @@ struct LegRayCost {
         if (b > hi) hi = b;
       }
     }
-    return T(0.5) * (lo + hi);
   }
 };
 
@@ -95,7 +119,8 @@ PcaDirection PrincipalDirection(const std::vector<ScanPoint>& points) {
 }
 
 LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegModel& leg,
-                    double axis_yaw_hint, const LegFitConfig& config) {
+                    double axis_yaw_hint, const LegFitConfig& config,
+                    const SilhouetteEdges& edges) {
   LegFitResult out;
   if (points.empty()) return out;
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
@@ -134,9 +159,21 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
   const double span = geometry::AngleDiff(last.angle, first.angle);
   const double mid = first.angle + 0.5 * span;
   double silhouette_weight = 0.0;
+  int edge_side = 0;
+  double edge_rad = 0.0;
   if (last.beam != first.beam) {
     const double step = std::abs(span / (last.beam - first.beam));
     silhouette_weight = config.range_sigma_m / (config.silhouette_sigma_beams * step);
+    // One edge seen and the other side open (the beam beyond returned nothing, or something
+    // nearer): the outer point there need not be the leg's last, so the centre between the
+    // outer beams would pull the leg toward the edge seen. The edge seen and the leg's known
+    // section place it instead; one edge is known half as well as the mean of two.
+    if (edges.before_rad.has_value() != edges.after_rad.has_value()) {
+      const double edge = edges.before_rad ? *edges.before_rad : *edges.after_rad;
+      edge_rad = geometry::AngleDiff(edge, mid);
+      edge_side = edge_rad < 0.0 ? -1 : 1;
+      silhouette_weight /= std::sqrt(2.0);
+    }
   }
 
   // Robust loss by iteratively reweighted least squares (Huber weights w = min(1, k / |r|)),
@@ -155,7 +192,9 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
                   config.prior_weight,
                   std::cos(mid),
                   std::sin(mid),
-                  silhouette_weight};
+                  silhouette_weight,
+                  edge_side,
+                  edge_rad};
   using AutoDiff = ceres::TinySolverAutoDiffFunction<LegRayCost, Eigen::Dynamic, 2>;
   const AutoDiff function(cost);
   ceres::TinySolver<AutoDiff> solver;
@@ -180,7 +219,7 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
     }
     // A missed edge beam (dropout, a trailing point removed) or a leg partly hidden behind
     // another cuts one side of the silhouette: the same robust loss.
-    const double r_silhouette = silhouette_weight * cost.SilhouetteMidBearing(c.data());
+    const double r_silhouette = silhouette_weight * cost.SilhouetteResidual(c.data());
     cost.silhouette_weight =
         silhouette_weight * HuberSqrtWeight(std::abs(r_silhouette), config.loss_scale_m);
   }

@@ -7,6 +7,7 @@
 #include "geometry/shelf_model.hpp"
 #include "perception/detector_config.hpp"
 #include "perception/preprocess.hpp"
+#include "perception/silhouette_edges.hpp"
 
 namespace shelfdock::perception {
 
@@ -33,8 +34,11 @@ PcaDirection PrincipalDirection(const std::vector<ScanPoint>& points);
 /// the G_h x G_w section that faces the sensor (at the origin). The section's axes come from
 /// the PCA when the points show a clear face, else from `axis_yaw_hint` (the shelf edge: legs
 /// are mounted square to the frame). Unlike the bare centroid, the fit is not pulled toward the
-/// sensor by the leg's half depth.
+/// sensor by the leg's half depth. Across the beams the leg's outline (silhouette) places it:
+/// centred between its outer beams when the scan shows both edges or neither, against the one
+/// edge `edges` shows when the other side may go on (a dropout, an occluder).
 LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegModel& leg,
-                    double axis_yaw_hint, const LegFitConfig& config);
+                    double axis_yaw_hint, const LegFitConfig& config,
+                    const SilhouetteEdges& edges = {});
 
 }  // namespace shelfdock::perception

@@ -190,6 +190,7 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     c.centroid = piece.centroid;
     c.extent_m = piece.extent_m;
     c.span = si;
+    c.edges = FindSilhouetteEdges(points, c.points.front(), c.points.back(), split_step);
     out.candidates.push_back(std::move(c));
     return true;
   };

@@ -9,17 +9,10 @@
 #include "geometry/pose2.hpp"
 #include "geometry/shelf_model.hpp"
 #include "perception/detector_config.hpp"
+#include "perception/scan_point.hpp"
+#include "perception/silhouette_edges.hpp"
 
 namespace shelfdock::perception {
-
-/// One valid return, in the scan's frame (`lidar`, sensor at the origin). Invariant: p = range *
-/// (cos angle, sin angle) with range > 0 (the fits take the beam direction as p / range).
-struct ScanPoint {
-  Eigen::Vector2d p = Eigen::Vector2d::Zero();  ///< [m] position, lidar frame
-  double range = 0.0;                           ///< [m]
-  double angle = 0.0;                           ///< [rad] beam bearing
-  int beam = 0;                                 ///< index in the scan
-};
 
 /// Consecutive points of one object.
 struct Cluster {
@@ -27,6 +20,7 @@ struct Cluster {
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();  ///< [m] mean of the points (Eq. 3)
   double extent_m = 0.0;  ///< [m] largest distance of a point from the first one
   int span = -1;          ///< index in PreprocessOutput::spans (-1 when built on its own)
+  SilhouetteEdges edges;  ///< where the scan shows the object's outline to end (leg fit)
 };
 
 /// A cluster as a span [begin, end) of a point vector in beam order, with its shape.

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "perception/scan_point.hpp"
+
+namespace shelfdock::perception {
+
+/// Where an object's outline ends across the beams, as far as the scan shows it.
+struct SilhouetteEdges {
+  /// [rad] Bearing of the edge before the first point (after the last): halfway between that
+  /// point's beam and the next beam out, when that beam passed beside the object and returned
+  /// from farther away. Empty when the next beam returned nothing (a dropout on a shiny leg seen
+  /// at a grazing angle, or nothing within range) or something nearer (an occluder): the object
+  /// may go on there, so its outline says nothing on that side.
+  std::optional<double> before_rad;
+  std::optional<double> after_rad;
+};
+
+/// The edges of the object whose returns run from `first` to `last` (beam order), read from
+/// `scan_points`, the scan's valid returns in beam order before any filtering: a trailing
+/// (mixed) point straddles the edge, so it marks the edge as well as the background does. A
+/// neighbour counts as beside the object when it is at least min_depth_m farther than the
+/// object's point next to it.
+SilhouetteEdges FindSilhouetteEdges(const std::vector<ScanPoint>& scan_points,
+                                    const ScanPoint& first, const ScanPoint& last,
+                                    double min_depth_m);
+
+}  // namespace shelfdock::perception
