@@ -83,6 +83,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("object_point_weight", c.object_point_weight);
   f.Read("leg_size_margin_m", c.leg_size_margin_m);
   f.Read("leg_width_slack_m", c.leg_width_slack_m);
+  f.Read("leg_width_bias_beams", c.leg_width_bias_beams);
   f.Read("leg_width_bias_slack_m", c.leg_width_bias_slack_m);
   f.Read("leg_width_scale_m", c.leg_width_scale_m);
   f.Read("min_confidence", c.min_confidence);

@@ -75,6 +75,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.object_point_weight >= 0.0, "evidence.object_point_weight", ">= 0");
   k.Check(e.leg_size_margin_m >= 0.0, "evidence.leg_size_margin_m", ">= 0");
   k.Check(e.leg_width_slack_m >= 0.0, "evidence.leg_width_slack_m", ">= 0");
+  k.Check(e.leg_width_bias_beams >= 0.0, "evidence.leg_width_bias_beams", ">= 0");
   k.Check(e.leg_width_bias_slack_m >= 0.0, "evidence.leg_width_bias_slack_m", ">= 0");
   k.Check(e.leg_width_scale_m > 0.0, "evidence.leg_width_scale_m", "> 0");
   k.Check(e.min_confidence >= 0.0 && e.min_confidence < 1.0, "evidence.min_confidence",

@@ -112,7 +112,9 @@ struct EvidenceConfig {
                                           ///< leg-sized
   double leg_width_slack_m = 0.015;       ///< [m] seen leg widths may differ by one beam plus this
                                           ///< (the beam footprint blurs a leg's edges)
-  double leg_width_bias_slack_m = 0.01;   ///< [m] legs' mean width: half a beam plus this
+  double leg_width_bias_beams = 0.25;     ///< [beams] legs' mean width may differ by this many
+                                          ///< beam spacings plus leg_width_bias_slack_m
+  double leg_width_bias_slack_m = 0.006;  ///< [m] legs' mean width: see leg_width_bias_beams
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
   double min_confidence = 0.3;            ///< [-] below this a hypothesis is not returned
   double overlap_margin_m = 0.05;         ///< [m] two hypotheses whose leg rectangles, each

@@ -158,11 +158,19 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
   const ScanPoint& last = points.back();
   const double span = geometry::AngleDiff(last.angle, first.angle);
   const double mid = first.angle + 0.5 * span;
+  // The beam step: from the outer beams, or for a single return from the edge seen beside it
+  // (halfway to the next beam). A single return with no edge seen has no silhouette term.
+  double step = 0.0;
+  if (last.beam != first.beam) {
+    step = std::abs(span / (last.beam - first.beam));
+  } else if (edges.before_rad || edges.after_rad) {
+    step = 2.0 * std::abs(geometry::AngleDiff(
+                     edges.before_rad ? *edges.before_rad : *edges.after_rad, first.angle));
+  }
   double silhouette_weight = 0.0;
   int edge_side = 0;
   double edge_rad = 0.0;
-  if (last.beam != first.beam) {
-    const double step = std::abs(span / (last.beam - first.beam));
+  if (step > 0.0) {
     silhouette_weight = config.range_sigma_m / (config.silhouette_sigma_beams * step);
     // One edge seen and the other side open (the beam beyond returned nothing, or something
     // nearer): the outer point there need not be the leg's last, so the centre between the

@@ -39,7 +39,8 @@ struct ShelfEvidence {
   int foreign_legs_inside = 0;   ///< legs of other leg sets (not its own) standing inside
   double leg_width_error_m = 0;  ///< worst |seen width - model leg's silhouette| over its legs
   double leg_width_bias_m = 0;   ///< mean (seen width - model leg's silhouette) over its legs
-  double leg_width_bias_excess_m = 0;  ///< |leg_width_bias_m| beyond half a beam + the slack
+                                 ///< with both outline edges seen (or seen too wide)
+  double leg_width_bias_excess_m = 0;  ///< |leg_width_bias_m| beyond its allowance
   double confidence = 0.0;             ///< [0, 1], see ShelfConfidence
 };
 

@@ -140,6 +140,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.evidence.leg_size_margin_m = -0.01; }},
     {"leg_width_slack", "evidence.leg_width_slack_m",
      [](auto& c) { c.evidence.leg_width_slack_m = -0.01; }},
+    {"leg_width_bias_beams", "evidence.leg_width_bias_beams",
+     [](auto& c) { c.evidence.leg_width_bias_beams = -0.5; }},
     {"leg_width_bias_slack", "evidence.leg_width_bias_slack_m",
      [](auto& c) { c.evidence.leg_width_bias_slack_m = -0.01; }},
     {"leg_width_scale", "evidence.leg_width_scale_m",
