@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 
 #include "geometry/angle.hpp"
 
@@ -134,15 +135,25 @@ double ObjectPointWeight(const ShelfEvidence& ev, const EvidenceConfig& config) 
 
 }  // namespace
 
-double LegSilhouetteWidth(const geometry::LegModel& leg, double leg_yaw,
+double LegSilhouetteAngle(const geometry::LegModel& leg, double leg_yaw,
                           const Eigen::Vector2d& centre) {
-  if (leg.shape == geometry::LegShape::kCircle) return leg.length_m;
-  const double n = centre.norm();
-  const Eigen::Vector2d across =
-      n > 1e-9 ? Eigen::Vector2d(-centre.y() / n, centre.x() / n) : Eigen::Vector2d::UnitY();
+  const double d = centre.norm();
+  if (leg.shape == geometry::LegShape::kCircle) {
+    return d > leg.Radius() ? 2.0 * std::asin(leg.Radius() / d) : std::numbers::pi;
+  }
+  const double bearing = std::atan2(centre.y(), centre.x());
   const Eigen::Vector2d e1(std::cos(leg_yaw), std::sin(leg_yaw));
   const Eigen::Vector2d e2(-e1.y(), e1.x());
-  return leg.length_m * std::abs(e1.dot(across)) + leg.width_m * std::abs(e2.dot(across));
+  double lo = 0.0, hi = 0.0;
+  for (const double sx : {-0.5 * leg.length_m, 0.5 * leg.length_m}) {
+    for (const double sy : {-0.5 * leg.width_m, 0.5 * leg.width_m}) {
+      const Eigen::Vector2d corner = centre + sx * e1 + sy * e2;
+      const double b = geometry::AngleDiff(std::atan2(corner.y(), corner.x()), bearing);
+      lo = std::min(lo, b);
+      hi = std::max(hi, b);
+    }
+  }
+  return hi - lo;
 }
 
 ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
@@ -172,17 +183,26 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       const Cluster& c = pre.candidates[cand];
       ev.legs[k] = LegView::kSeen;
       // Leg size: a post, a person's leg or a box corner is wider than the model's leg.
-      const double expected = LegSilhouetteWidth(model.leg, T_lidar_shelf.yaw, c.centroid);
+      // Widths compared as angles (the outer beams' span plus one beam against the section's
+      // silhouette), in metres at the leg's range.
+      const Eigen::Vector2d centre = T_lidar_shelf * corners[k];
+      const double range = centre.norm();
+      const double expected = range * LegSilhouetteAngle(model.leg, T_lidar_shelf.yaw, centre);
       // One beam either way at the edges, plus the blur of the beam's footprint.
-      const double beam = c.centroid.norm() * alpha;  // one beam's spacing at the leg
+      const double beam = range * alpha;  // one beam's spacing at the leg
       const double slack = beam + config.leg_width_slack_m;
-      const double seen = SeenWidth(c.points.front(), c.points.back(), c.centroid, alpha);
-      width_errors[k] = std::max(0.0, std::abs(seen - expected) - slack);
-      ++width_count;
+      const double seen =
+          range *
+          (std::abs(geometry::AngleDiff(c.points.back().angle, c.points.front().angle)) + alpha);
       // A leg whose outline the scan does not close on both sides (a dropout or something
-      // nearer beside it) may be wider than its returns: its width is only a lower bound, and it
-      // tells nothing about the legs being too narrow.
-      if ((c.edges.before_rad && c.edges.after_rad) || seen > expected) {
+      // nearer beside it) may be wider than its returns: its width is only a lower bound, too
+      // narrow says nothing.
+      const bool closed = c.edges.before_rad && c.edges.after_rad;
+      width_errors[k] =
+          std::max(0.0, (closed ? std::abs(seen - expected) : seen - expected) - slack);
+      ++width_count;
+      // The legs' mean width likewise: closed legs, or legs already too wide.
+      if (closed || seen > expected) {
         width_bias_sum += seen - expected;
         beam_sum += beam;
         ++bias_count;

@@ -70,9 +70,12 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
 double ShelfConfidence(const ShelfEvidence& evidence, double err_sum_m,
                        const EvidenceConfig& config);
 
-/// Visible width of a leg section (rectangle length x width with its x axis at `leg_yaw`, or a
-/// circle) seen from the sensor at the origin, across the beam toward `centre`.
-double LegSilhouetteWidth(const geometry::LegModel& leg, double leg_yaw,
+/// [rad] Angle a leg section (rectangle length x width with its x axis at `leg_yaw`, or a
+/// circle) centred at `centre` subtends at the sensor (the origin): between its outline's
+/// tangents, exact at any range (near the sensor a square leg's extreme corners lie at
+/// different depths, and a width across the beam at the centre's range is no longer what the
+/// beams see).
+double LegSilhouetteAngle(const geometry::LegModel& leg, double leg_yaw,
                           const Eigen::Vector2d& centre);
 
 }  // namespace shelfdock::perception

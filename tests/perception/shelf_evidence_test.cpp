@@ -203,13 +203,28 @@ TEST(ShelfEvidenceTest, PostInsideTheFootprintLowersConfidence) {
   }
 }
 
-TEST(ShelfEvidenceTest, LegSilhouetteWidth) {
+TEST(ShelfEvidenceTest, LegSilhouetteAngle) {
   geometry::LegModel square;  // 40 x 40 mm
-  // Face-on: the side; along the diagonal: the diagonal.
-  EXPECT_NEAR(LegSilhouetteWidth(square, 0.0, {2.0, 0.0}), 0.04, 1e-12);
-  EXPECT_NEAR(LegSilhouetteWidth(square, M_PI / 4, {2.0, 0.0}), 0.04 * std::sqrt(2.0), 1e-12);
+  // Face-on 2 m away: the near corners at 1.98 m bound it; along the diagonal: the side corners.
+  EXPECT_NEAR(LegSilhouetteAngle(square, 0.0, {2.0, 0.0}), 2.0 * std::atan(0.02 / 1.98), 1e-12);
+  EXPECT_NEAR(LegSilhouetteAngle(square, M_PI / 4, {2.0, 0.0}),
+              2.0 * std::atan(0.02 * std::sqrt(2.0) / 2.0), 1e-12);
+  // 0.2 m away, turned by 0.3 rad: the angle between the outermost corner bearings, whatever
+  // their depth.
+  const double yaw = 0.3;
+  double lo = 1e9, hi = -1e9;
+  for (const double sx : {-0.02, 0.02}) {
+    for (const double sy : {-0.02, 0.02}) {
+      const double b = std::atan2(0.1 + std::sin(yaw) * sx + std::cos(yaw) * sy,
+                                  0.2 + std::cos(yaw) * sx - std::sin(yaw) * sy);
+      lo = std::min(lo, b);
+      hi = std::max(hi, b);
+    }
+  }
+  EXPECT_NEAR(LegSilhouetteAngle(square, yaw, {0.2, 0.1}), hi - lo, 1e-12);
   geometry::LegModel round{geometry::LegShape::kCircle, 0.026, 0.026};
-  EXPECT_NEAR(LegSilhouetteWidth(round, 0.7, {1.0, 1.0}), 0.026, 1e-12);
+  EXPECT_NEAR(LegSilhouetteAngle(round, 0.7, {1.0, 1.0}), 2.0 * std::asin(0.013 / std::sqrt(2.0)),
+              1e-12);
 }
 
 TEST(ShelfEvidenceTest, ConfidenceIsOneForAPerfectShelfAndFallsWithEachFlaw) {
