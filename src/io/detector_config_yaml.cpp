@@ -75,9 +75,8 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("interior_margin_m", c.interior_margin_m);
   f.Read("occluded_credit", c.occluded_credit);
   f.Read("unobserved_credit", c.unobserved_credit);
-  f.Read("fit_scale_m", c.fit_scale_m);
-  f.Read("fit_reference_sigma_m", c.fit_reference_sigma_m);
-  f.Read("max_fit_tolerance_factor", c.max_fit_tolerance_factor);
+  f.Read("fit_chi2_three_legs", c.fit_chi2_three_legs);
+  f.Read("fit_chi2_four_legs", c.fit_chi2_four_legs);
   f.Read("interior_scale_points", c.interior_scale_points);
   f.Read("foreign_leg_points", c.foreign_leg_points);
   f.Read("object_point_weight", c.object_point_weight);

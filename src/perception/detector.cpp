@@ -67,20 +67,6 @@ struct ScoreInputs {
   double range_noise_m;  // the scan's own (EstimateRangeNoise), or the configured one
 };
 
-// How much less well than fit_reference_sigma_m the legs of a hypothesis are known: the error of
-// a leg centre grows with the range noise and, across the beam, with the beam spacing at the
-// leg (r alpha, of which a centre is found to about half). The farthest leg sets it, since the
-// edges it ends bound err_sum. Never below 1 (near legs keep the tight bounds) and capped.
-double FitToleranceFactor(const std::array<Eigen::Vector2d, 4>& legs, int count,
-                          const ScoreInputs& in) {
-  double far = 0.0;
-  for (int i = 0; i < count; ++i) far = std::max(far, legs[i].norm());
-  const double across = 0.5 * far * std::abs(in.angle_increment_rad);
-  const double sigma = std::hypot(in.range_noise_m, across);
-  const EvidenceConfig& e = in.config.evidence;
-  return std::clamp(sigma / e.fit_reference_sigma_m, 1.0, e.max_fit_tolerance_factor);
-}
-
 void Count(Verdict verdict, RejectionCounts& rejected) {
   switch (verdict) {
     case Verdict::kFit:
@@ -166,10 +152,6 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     rec.verdict = Verdict::kModel;
     return h;
   }
-  // Four legs vouch for each other, so their fit is read against what their measurement allows;
-  // three legs keep the fixed scale (widening it for them too gained 0.5 % right-first but
-  // added clutter detections with a preset: eval-layouts seeds 1, 2 -> 4 of 400).
-  const double tolerance = set.count == 4 ? FitToleranceFactor(legs, set.count, in) : 1.0;
   // Two edges constrain a shelf less than four: a 3-leg set must match more tightly.
   const double three_leg_bound = in.T_lidar_preset ? config.model_match.three_leg_err_sum_preset_m
                                                    : config.model_match.three_leg_err_sum_m;
@@ -181,8 +163,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   for (int i = 0; i < set.count; ++i) corner_candidate[fit->corner_of_leg[i]] = set.legs[i];
   ShelfEvidence ev = GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre,
                                     in.shelf_like_spans, in.angle_increment_rad, config.evidence);
-  // The fit term reads err_sum against the scale the legs' measurement allows.
-  ev.confidence = ShelfConfidence(ev, refined.err_sum / tolerance, config.evidence);
+  ev.confidence = ShelfConfidence(ev, refined_pose.chi2, set.count, config.evidence);
   h.corners_present =
       static_cast<int>(std::count(ev.legs.begin(), ev.legs.end(), LegView::kPresent));
   rec.confidence = ev.confidence;

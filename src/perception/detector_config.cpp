@@ -67,9 +67,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           "in [0, 1]");
   k.Check(e.unobserved_credit >= 0.0 && e.unobserved_credit <= 1.0, "evidence.unobserved_credit",
           "in [0, 1]");
-  k.Check(e.fit_scale_m > 0.0, "evidence.fit_scale_m", "> 0");
-  k.Check(e.fit_reference_sigma_m > 0.0, "evidence.fit_reference_sigma_m", "> 0");
-  k.Check(e.max_fit_tolerance_factor >= 1.0, "evidence.max_fit_tolerance_factor", ">= 1");
+  k.Check(e.fit_chi2_three_legs > 0.0, "evidence.fit_chi2_three_legs", "> 0");
+  k.Check(e.fit_chi2_four_legs > 0.0, "evidence.fit_chi2_four_legs", "> 0");
   k.Check(e.interior_scale_points > 0.0, "evidence.interior_scale_points", "> 0");
   k.Check(e.foreign_leg_points >= 0.0, "evidence.foreign_leg_points", ">= 0");
   k.Check(e.object_point_weight >= 0.0, "evidence.object_point_weight", ">= 0");

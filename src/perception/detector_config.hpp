@@ -99,12 +99,10 @@ struct EvidenceConfig {
   double interior_margin_m = 0.06;        ///< [m] shrink of the footprint for the free-space check
   double occluded_credit = 0.75;          ///< [-] a hidden leg counts this much of a seen one
   double unobserved_credit = 0.5;         ///< [-] a leg no beam reaches counts this much
-  double fit_scale_m = 0.03;              ///< [m] err_sum that halves the confidence
-  double fit_reference_sigma_m = 0.012;   ///< [m] leg-centre error fit_scale_m is set for; a
-                                          ///< four-leg hypothesis whose farthest leg is known
-                                          ///< less well (noisy ranges, wide beam spacing) gets
-                                          ///< it scaled up
-  double max_fit_tolerance_factor = 1.5;  ///< [-] cap on that scaling
+  double fit_chi2_three_legs = 6.0;       ///< [-] chi-square per degree of freedom of three
+                                          ///< legs against the model (each leg's error over
+                                          ///< what its returns allow) that halves the confidence
+  double fit_chi2_four_legs = 12.0;       ///< [-] the same for four legs
   double interior_scale_points = 4.0;     ///< [-] points inside the footprint that halve it
   double foreign_leg_points = 6.0;        ///< [-] a leg-sized cluster inside counts as this many
   double object_point_weight = 0.25;      ///< [-] weight of an interior point of a larger object

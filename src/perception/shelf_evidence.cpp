@@ -289,13 +289,20 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   return ev;
 }
 
-double ShelfConfidence(const ShelfEvidence& ev, double err_sum_m, const EvidenceConfig& config) {
+double ShelfConfidence(const ShelfEvidence& ev, double leg_chi2, int legs,
+                       const EvidenceConfig& config) {
   const int unobserved = 4 - ev.legs_seen - ev.legs_occluded - ev.legs_seen_through;
   const double support = (ev.legs_seen + config.occluded_credit * ev.legs_occluded +
                           config.unobserved_credit * unobserved) /
                          4.0;
-  const double e = err_sum_m / config.fit_scale_m;
-  const double fit = 1.0 / (1.0 + e * e);
+  // The fit read against what the legs' measurement allows: near legs seen by many beams must
+  // match the model to millimetres, far noisy ones may miss by centimetres. A fixed scale on
+  // err_sum (before) let triangles of posts near the sensor pass and failed far shelves at 20 mm
+  // noise (eval-layouts seeds 1: 96.46 -> 96.84 %, 9000 scenes 96.40 -> 96.69 %, clutter 2000
+  // scenes: 15 -> 5 detections).
+  const int dof = std::max(1, 2 * legs - 3);
+  const double scale = legs >= 4 ? config.fit_chi2_four_legs : config.fit_chi2_three_legs;
+  const double fit = 1.0 / (1.0 + std::max(0.0, leg_chi2) / (dof * scale));
   const double blocked =
       ev.interior_leg_points +
       ObjectPointWeight(ev, config) * (ev.interior_points - ev.interior_leg_points) +

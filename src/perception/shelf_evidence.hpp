@@ -58,7 +58,10 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
 /// Confidence in [0, 1]: the product of
 /// - leg support: (seen + occluded_credit * occluded + unobserved_credit * unobserved) / 4,
 ///   a leg seen through counts 0;
-/// - fit: 1 / (1 + (err_sum / fit_scale_m)^2), the Eq. 2 error of the fitted legs;
+/// - fit: 1 / (1 + chi2 / (dof * c)), where chi2 is the legs' chi-square against the model
+///   (RefineShelfPose: each leg's error along and across its beam over what its own returns
+///   allow), dof = 2 legs - 3 its degrees of freedom and c fit_chi2_three_legs or
+///   fit_chi2_four_legs;
 /// - free space: 1 / (1 + blocked / interior_scale_points), where blocked counts each interior
 ///   point of a foreign leg once, each other interior point object_point_weight times (once
 ///   when a leg is missing and nothing hides it), and each foreign leg inside
@@ -67,7 +70,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
 ///             / (1 + (leg_width_bias_excess_m / leg_width_scale_m)^2).
 /// It reads as "how sure the scan makes us that this is a shelf of this model here": 1 is four
 /// legs seen at model size with nothing between them.
-double ShelfConfidence(const ShelfEvidence& evidence, double err_sum_m,
+double ShelfConfidence(const ShelfEvidence& evidence, double leg_chi2, int legs,
                        const EvidenceConfig& config);
 
 /// [rad] Angle a leg section (rectangle length x width with its x axis at `leg_yaw`, or a

@@ -56,8 +56,8 @@ TEST(DetectorConfigYamlTest, ShippedFileHoldsTheStructDefaults) {
   EXPECT_EQ(read.preprocess.surface_tolerance_m, def.preprocess.surface_tolerance_m);
   EXPECT_EQ(read.preprocess.surface_noise_sigmas, def.preprocess.surface_noise_sigmas);
   EXPECT_EQ(read.preprocess.surface_max_step_m, def.preprocess.surface_max_step_m);
-  EXPECT_EQ(read.evidence.fit_reference_sigma_m, def.evidence.fit_reference_sigma_m);
-  EXPECT_EQ(read.evidence.max_fit_tolerance_factor, def.evidence.max_fit_tolerance_factor);
+  EXPECT_EQ(read.evidence.fit_chi2_three_legs, def.evidence.fit_chi2_three_legs);
+  EXPECT_EQ(read.evidence.fit_chi2_four_legs, def.evidence.fit_chi2_four_legs);
 }
 
 TEST(DetectorConfigYamlTest, ReadsGivenKeysAndKeepsDefaultsForTheRest) {
@@ -69,15 +69,15 @@ TEST(DetectorConfigYamlTest, ReadsGivenKeysAndKeepsDefaultsForTheRest) {
   EXPECT_NO_THROW(ReadDetectorConfig(WriteTemp("empty.yaml", "")));
 }
 
-// The split and fit-tolerance keys are read into their own fields (values unlike the defaults).
-TEST(DetectorConfigYamlTest, ReadsTheSplitAndFitToleranceKeys) {
+// The split and fit-scale keys are read into their own fields (values unlike the defaults).
+TEST(DetectorConfigYamlTest, ReadsTheSplitAndFitScaleKeys) {
   const auto c = ReadDetectorConfig(WriteTemp(
       "split.yaml",
       "preprocess: {split_max_extra_m: 0.0, split_min_step_m: 0.045, split_noise_steps: 4.5,\n"
       "             join_noise_breaks: false, leg_extent_noise_sigmas: 1.5,\n"
       "             split_end_pieces: false, surface_tolerance_m: 0.03,\n"
       "             surface_noise_sigmas: 2.5, surface_max_step_m: 0.4}\n"
-      "evidence: {fit_reference_sigma_m: 0.02, max_fit_tolerance_factor: 2.5}\n"));
+      "evidence: {fit_chi2_three_legs: 4.5, fit_chi2_four_legs: 20}\n"));
   EXPECT_DOUBLE_EQ(c.preprocess.split_max_extra_m, 0.0);
   EXPECT_DOUBLE_EQ(c.preprocess.split_min_step_m, 0.045);
   EXPECT_DOUBLE_EQ(c.preprocess.split_noise_steps, 4.5);
@@ -87,11 +87,11 @@ TEST(DetectorConfigYamlTest, ReadsTheSplitAndFitToleranceKeys) {
   EXPECT_DOUBLE_EQ(c.preprocess.surface_tolerance_m, 0.03);
   EXPECT_DOUBLE_EQ(c.preprocess.surface_noise_sigmas, 2.5);
   EXPECT_DOUBLE_EQ(c.preprocess.surface_max_step_m, 0.4);
-  EXPECT_DOUBLE_EQ(c.evidence.fit_reference_sigma_m, 0.02);
-  EXPECT_DOUBLE_EQ(c.evidence.max_fit_tolerance_factor, 2.5);
+  EXPECT_DOUBLE_EQ(c.evidence.fit_chi2_three_legs, 4.5);
+  EXPECT_DOUBLE_EQ(c.evidence.fit_chi2_four_legs, 20.0);
   // Untouched keys of the same sections keep their defaults.
   EXPECT_EQ(c.preprocess.cluster_gap_m, perception::PreprocessConfig{}.cluster_gap_m);
-  EXPECT_EQ(c.evidence.fit_scale_m, perception::EvidenceConfig{}.fit_scale_m);
+  EXPECT_EQ(c.evidence.min_confidence, perception::EvidenceConfig{}.min_confidence);
 }
 
 TEST(DetectorConfigYamlTest, ErrorsNameTheKey) {
@@ -104,16 +104,16 @@ TEST(DetectorConfigYamlTest, ErrorsNameTheKey) {
   ExpectKeyError("evidence: {overlap_margin_m: -0.1}\n", "evidence.overlap_margin_m");
   ExpectKeyError("evidence: {occluded_credit: -0.1}\n", "evidence.occluded_credit");
   ExpectKeyError("model_match: {gamma_sum_m: .nan}\n", "model_match.gamma_sum_m");
-  // The split and fit-tolerance keys: impossible values and wrong types.
+  // The split and fit-scale keys: impossible values and wrong types.
   ExpectKeyError("preprocess: {split_max_extra_m: -0.1}\n", "preprocess.split_max_extra_m");
   ExpectKeyError("preprocess: {split_min_step_m: 0}\n", "preprocess.split_min_step_m");
   ExpectKeyError("preprocess: {split_noise_steps: -3}\n", "preprocess.split_noise_steps");
-  ExpectKeyError("evidence: {fit_reference_sigma_m: 0}\n", "evidence.fit_reference_sigma_m");
-  ExpectKeyError("evidence: {max_fit_tolerance_factor: 0.5}\n",
-                 "evidence.max_fit_tolerance_factor");
+  ExpectKeyError("evidence: {fit_chi2_three_legs: 0}\n", "evidence.fit_chi2_three_legs");
+  ExpectKeyError("evidence: {fit_chi2_four_legs: -2}\n", "evidence.fit_chi2_four_legs");
   ExpectKeyError("preprocess: {split_min_step_m: three}\n", "preprocess.split_min_step_m");
-  ExpectKeyError("evidence: {max_fit_tolerance_factor: .nan}\n",
-                 "evidence.max_fit_tolerance_factor");
+  ExpectKeyError("evidence: {fit_chi2_four_legs: .nan}\n", "evidence.fit_chi2_four_legs");
+  // The fixed err_sum scale and its tolerance factor are gone: an old file names the key.
+  ExpectKeyError("evidence: {fit_scale_m: 0.03}\n", "evidence.fit_scale_m");
   ExpectKeyError("preprocess: {split_max_extra: 0.1}\n", "preprocess.split_max_extra");
   EXPECT_THROW(ReadDetectorConfig("/nonexistent/detector.yaml"), InputError);
 }

@@ -115,21 +115,14 @@ const RuleCase kCases[] = {
      [](auto& c) { c.evidence.unobserved_credit = -0.1; }},
     {"unobserved_credit_above_one", "evidence.unobserved_credit",
      [](auto& c) { c.evidence.unobserved_credit = 1.1; }},
-    {"fit_scale", "evidence.fit_scale_m", [](auto& c) { c.evidence.fit_scale_m = 0.0; }},
-    {"fit_reference_sigma_zero", "evidence.fit_reference_sigma_m",
-     [](auto& c) { c.evidence.fit_reference_sigma_m = 0.0; }},
-    {"fit_reference_sigma_negative", "evidence.fit_reference_sigma_m",
-     [](auto& c) { c.evidence.fit_reference_sigma_m = -0.012; }},
-    {"max_fit_tolerance_factor_below_one", "evidence.max_fit_tolerance_factor",
-     [](auto& c) { c.evidence.max_fit_tolerance_factor = 0.99; }},
-    {"max_fit_tolerance_factor_zero", "evidence.max_fit_tolerance_factor",
-     [](auto& c) { c.evidence.max_fit_tolerance_factor = 0.0; }},
-    {"fit_reference_sigma_nan", "evidence.fit_reference_sigma_m",
-     [](auto& c) { c.evidence.fit_reference_sigma_m = std::numeric_limits<double>::quiet_NaN(); }},
-    {"max_fit_tolerance_factor_nan", "evidence.max_fit_tolerance_factor",
-     [](auto& c) {
-       c.evidence.max_fit_tolerance_factor = std::numeric_limits<double>::quiet_NaN();
-     }},
+    {"fit_chi2_three_legs_zero", "evidence.fit_chi2_three_legs",
+     [](auto& c) { c.evidence.fit_chi2_three_legs = 0.0; }},
+    {"fit_chi2_three_legs_nan", "evidence.fit_chi2_three_legs",
+     [](auto& c) { c.evidence.fit_chi2_three_legs = std::numeric_limits<double>::quiet_NaN(); }},
+    {"fit_chi2_four_legs_negative", "evidence.fit_chi2_four_legs",
+     [](auto& c) { c.evidence.fit_chi2_four_legs = -1.0; }},
+    {"fit_chi2_four_legs_nan", "evidence.fit_chi2_four_legs",
+     [](auto& c) { c.evidence.fit_chi2_four_legs = std::numeric_limits<double>::quiet_NaN(); }},
     {"interior_scale", "evidence.interior_scale_points",
      [](auto& c) { c.evidence.interior_scale_points = 0.0; }},
     {"foreign_leg_points", "evidence.foreign_leg_points",
@@ -161,15 +154,14 @@ const RuleCase kCases[] = {
 TEST(DetectorConfigTest, DefaultsPass) { EXPECT_FALSE(FindConfigViolation(DetectorConfig{})); }
 
 // The new keys' limits are allowed values: 0 turns the split off, 0 noise steps leave only
-// split_min_step_m, a tolerance factor of exactly 1 never scales; a tiny positive step or
-// reference sigma is valid too.
-TEST(DetectorConfigTest, SplitAndFitToleranceLimitsPass) {
+// split_min_step_m; a tiny positive step or fit chi-square scale is valid too.
+TEST(DetectorConfigTest, SplitAndFitScaleLimitsPass) {
   DetectorConfig c;
   c.preprocess.split_max_extra_m = 0.0;
   c.preprocess.split_noise_steps = 0.0;
   c.preprocess.split_min_step_m = 1e-6;
-  c.evidence.fit_reference_sigma_m = 1e-6;
-  c.evidence.max_fit_tolerance_factor = 1.0;
+  c.evidence.fit_chi2_three_legs = 1e-6;
+  c.evidence.fit_chi2_four_legs = 1e-6;
   const auto v = FindConfigViolation(c);
   EXPECT_FALSE(v.has_value()) << v->key << " " << v->requirement;
 }

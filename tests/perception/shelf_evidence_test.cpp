@@ -231,29 +231,37 @@ TEST(ShelfEvidenceTest, ConfidenceIsOneForAPerfectShelfAndFallsWithEachFlaw) {
   const EvidenceConfig config;
   ShelfEvidence ev;
   ev.legs_seen = 4;
-  EXPECT_DOUBLE_EQ(ShelfConfidence(ev, 0.0, config), 1.0);
+  EXPECT_DOUBLE_EQ(ShelfConfidence(ev, 0.0, 4, config), 1.0);
   ShelfEvidence hidden = ev;
   hidden.legs_seen = 3;
   hidden.legs_occluded = 1;
-  EXPECT_NEAR(ShelfConfidence(hidden, 0.0, config), (3 + config.occluded_credit) / 4, 1e-12);
-  EXPECT_NEAR(ShelfConfidence(ev, config.fit_scale_m, config), 0.5, 1e-12);
+  EXPECT_NEAR(ShelfConfidence(hidden, 0.0, 4, config), (3 + config.occluded_credit) / 4, 1e-12);
+  // The legs' chi-square halves it at fit_chi2_* per degree of freedom (5 with four legs, 3
+  // with three).
+  EXPECT_NEAR(ShelfConfidence(ev, 5.0 * config.fit_chi2_four_legs, 4, config), 0.5, 1e-12);
+  ShelfEvidence three = ev;
+  three.legs_seen = 3;
+  const double three_support = (3 + config.unobserved_credit) / 4;
+  EXPECT_NEAR(ShelfConfidence(three, 0.0, 3, config), three_support, 1e-12);
+  EXPECT_NEAR(ShelfConfidence(three, 3.0 * config.fit_chi2_three_legs, 3, config),
+              0.5 * three_support, 1e-12);
   // Points of foreign legs count in full, those of other objects a quarter with four legs seen.
   ShelfEvidence inside = ev;
   inside.interior_points = static_cast<int>(config.interior_scale_points);
   inside.interior_leg_points = inside.interior_points;
-  EXPECT_NEAR(ShelfConfidence(inside, 0.0, config), 0.5, 1e-12);
+  EXPECT_NEAR(ShelfConfidence(inside, 0.0, 4, config), 0.5, 1e-12);
   ShelfEvidence object = ev;
   object.interior_points =
       static_cast<int>(config.interior_scale_points / config.object_point_weight);
-  EXPECT_NEAR(ShelfConfidence(object, 0.0, config), 0.5, 1e-12);
+  EXPECT_NEAR(ShelfConfidence(object, 0.0, 4, config), 0.5, 1e-12);
   ShelfEvidence through = ev;
   through.legs_seen = 3;
   through.legs_seen_through = 1;
-  EXPECT_NEAR(ShelfConfidence(through, 0.0, config), 0.75, 1e-12);
+  EXPECT_NEAR(ShelfConfidence(through, 0.0, 4, config), 0.75, 1e-12);
   // The legs' mean width beyond its slack halves it at leg_width_scale_m.
   ShelfEvidence thin = ev;
   thin.leg_width_bias_excess_m = config.leg_width_scale_m;
-  EXPECT_NEAR(ShelfConfidence(thin, 0.0, config), 0.5, 1e-12);
+  EXPECT_NEAR(ShelfConfidence(thin, 0.0, 4, config), 0.5, 1e-12);
 }
 
 // Four legs at the corners of the 1075x883 model (40 mm square legs), turned 45 degrees to the
