@@ -57,10 +57,11 @@ struct ModelMatchConfig {
   double lambda_m = 0.03;             ///< [m] keep pairs whose err_sum is within this of the best
   double three_leg_err_sum_m = 0.04;  ///< [m] stricter err_sum (fitted legs) for 3-leg sets:
                                       ///< two edges constrain less than four
-  double three_leg_err_sum_preset_m = 0.05;  ///< [m] the same bound with a preset: the preset
+  double three_leg_err_sum_preset_m = 0.06;  ///< [m] the same bound with a preset: the preset
                                              ///< gate already confines where a shelf may stand,
                                              ///< so far fewer chance triangles can pass and the
-                                             ///< bound can allow 20 mm range noise
+                                             ///< bound can allow 20 mm range noise (the
+                                             ///< confidence's chi-square reads the fit then)
 };
 
 /// Paper 3.3: leg centres by PCA and nonlinear least squares.

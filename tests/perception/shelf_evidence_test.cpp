@@ -129,7 +129,7 @@ TEST(ShelfEvidenceTest, WithoutAPresetAFourthCornerBehindSomethingElseVouchesFor
   EXPECT_EQ(rs.stats.rejected.hidden_leg_no_preset, 0);
 }
 
-// A 3-leg set whose fitted legs miss the model by 4-5 cm (err_sum; one post moved outward, as
+// A 3-leg set whose fitted legs miss the model by 4-6 cm (err_sum; one post moved outward, as
 // far legs under 20 mm range noise can come out): with a preset it is within
 // three_leg_err_sum_preset_m and goes on to the evidence (returned, or rejected for a reason of
 // its own), without one it is beyond the stricter three_leg_err_sum_m: three_leg_error.
