@@ -52,6 +52,7 @@ void ReadLegFit(YamlFields f, perception::LegFitConfig& c) {
   f.Read("range_sigma_m", c.range_sigma_m);
   f.Read("silhouette_sigma_beams", c.silhouette_sigma_beams);
   f.Read("pca_min_points", c.pca_min_points);
+  f.Read("one_edge_max_points", c.one_edge_max_points);
   f.Read("pca_min_anisotropy", c.pca_min_anisotropy);
   f.Read("max_iterations", c.max_iterations);
   f.RejectUnknown();

@@ -46,6 +46,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(l.range_sigma_m > 0.0, "leg_fit.range_sigma_m", "> 0");
   k.Check(l.silhouette_sigma_beams > 0.0, "leg_fit.silhouette_sigma_beams", "> 0");
   k.Check(l.pca_min_points >= 2, "leg_fit.pca_min_points", ">= 2");
+  k.Check(l.one_edge_max_points >= 0, "leg_fit.one_edge_max_points", ">= 0");
   k.Check(l.pca_min_anisotropy >= 1.0, "leg_fit.pca_min_anisotropy", ">= 1");
   k.Check(l.max_iterations >= 1, "leg_fit.max_iterations", ">= 1");
 

@@ -74,6 +74,9 @@ struct LegFitConfig {
   double silhouette_sigma_beams = 0.3;  ///< [beams] std of the bearing of the silhouette's
                                         ///< centre (both edges known to a beam: 0.2, plus margin)
   int pca_min_points = 6;               ///< [-] fewer points: leg axes from the shelf edge
+  int one_edge_max_points = 5;          ///< [-] a leg whose outline shows one edge is placed by
+                                        ///< that edge when it has at most this many returns;
+                                        ///< with more, between its outer beams (its faces)
   double pca_min_anisotropy = 20;       ///< [-] eigenvalue ratio for a PCA direction to be trusted
   int max_iterations = 20;              ///< [-] solver iterations
 };

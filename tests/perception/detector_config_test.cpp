@@ -84,6 +84,8 @@ const RuleCase kCases[] = {
     {"leg_fit_silhouette_sigma", "leg_fit.silhouette_sigma_beams",
      [](auto& c) { c.leg_fit.silhouette_sigma_beams = 0.0; }},
     {"leg_fit_pca_points", "leg_fit.pca_min_points", [](auto& c) { c.leg_fit.pca_min_points = 1; }},
+    {"leg_fit_one_edge_points", "leg_fit.one_edge_max_points",
+     [](auto& c) { c.leg_fit.one_edge_max_points = -1; }},
     {"leg_fit_pca_anisotropy", "leg_fit.pca_min_anisotropy",
      [](auto& c) { c.leg_fit.pca_min_anisotropy = 0.9; }},
     {"leg_fit_iterations", "leg_fit.max_iterations", [](auto& c) { c.leg_fit.max_iterations = 0; }},

@@ -212,14 +212,15 @@ CutLegErrors CutLegAcrossErrors(const geometry::LegModel& leg, double range_m, d
 // A shiny leg seen at a grazing angle returns nothing on its last two beams (a dropout); the
 // beam before the first point passes beside it to a wall. The outer points no longer straddle
 // the leg, so the centre between them is a step off toward the side seen (about 1 step RMS
-// across the beam, measured 0.92-0.99); the one edge seen and the leg's section must keep it
-// within 0.5 steps RMS (measured 0.28-0.31: the quantisation of one edge alone is 0.29 steps).
-// 0.8-1 m away.
+// across the beam, measured 0.93-0.97); the one edge seen and the leg's section must keep it
+// within 0.5 steps RMS (the quantisation of one edge alone is 0.29 steps). 1.2-1.5 m away, where
+// the cut leg keeps 2-5 returns (LegFitConfig::one_edge_max_points; with more, its faces place
+// it).
 TEST(LegFitTest, ADropoutOnOneSideIsPlacedByTheEdgeSeen) {
   for (const auto& leg : {Round26(), Square40()}) {
     const CutLegErrors e = CutLegAcrossErrors(
-        leg, 0.8, 0.2, 3, [](std::vector<ScanPoint>& pts, SilhouetteEdges& edges) {
-          if (pts.size() < 5) return false;
+        leg, 1.2, 0.3, 3, [](std::vector<ScanPoint>& pts, SilhouetteEdges& edges) {
+          if (pts.size() < 4 || pts.size() > 7) return false;
           pts.resize(pts.size() - 2);  // the dropout
           edges.before_rad = pts.front().angle - 0.5 * kAlpha;
           return true;
@@ -229,7 +230,7 @@ TEST(LegFitTest, ADropoutOnOneSideIsPlacedByTheEdgeSeen) {
         "edge seen, %.2f without\n",
         leg.shape == geometry::LegShape::kCircle ? "round" : "box", e.with_edge_steps,
         e.blind_steps);
-    ASSERT_GT(e.draws, 200);
+    ASSERT_GT(e.draws, 50);
     EXPECT_LT(e.with_edge_steps, 0.5);
     EXPECT_GT(e.blind_steps, e.with_edge_steps + 0.2);
   }
