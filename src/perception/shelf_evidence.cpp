@@ -117,12 +117,11 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
   return look;
 }
 
-// Width of a cluster across the view: its angular span plus one beam, at its range.
-// `first` and `last` are its end points in beam order, `centroid` its mean.
-double SeenWidth(const ScanPoint& first, const ScanPoint& last, const Eigen::Vector2d& centroid,
-                 double alpha) {
+// Width of a cluster across the view: its angular span plus one beam, at `range_m`.
+// `first` and `last` are its end points in beam order.
+double SeenWidth(const ScanPoint& first, const ScanPoint& last, double range_m, double alpha) {
   const double span = std::abs(geometry::AngleDiff(last.angle, first.angle));
-  return centroid.norm() * (span + alpha);
+  return range_m * (span + alpha);
 }
 
 // Objects under a shelf are excused in part when four legs vouch for it, or when a leg is
@@ -191,9 +190,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       // One beam either way at the edges, plus the blur of the beam's footprint.
       const double beam = range * alpha;  // one beam's spacing at the leg
       const double slack = beam + config.leg_width_slack_m;
-      const double seen =
-          range *
-          (std::abs(geometry::AngleDiff(c.points.back().angle, c.points.front().angle)) + alpha);
+      const double seen = SeenWidth(c.points.front(), c.points.back(), range, alpha);
       // A leg whose outline the scan does not close on both sides (a dropout or something
       // nearer beside it) may be wider than its returns: its width is only a lower bound, too
       // narrow says nothing.
@@ -279,7 +276,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     // extent when only a few beams hit it, but its seen width gives it away. A foreign shelf
     // leg is no wider than the widest silhouette of this model's leg plus the beam blur.
     const double seen_width =
-        SeenWidth(pre.points[span.begin], pre.points[span.end - 1], span.centroid, alpha);
+        SeenWidth(pre.points[span.begin], pre.points[span.end - 1], span.centroid.norm(), alpha);
     if (seen_width > leg_extent + span.centroid.norm() * alpha + config.leg_width_slack_m) continue;
     if (s >= shelf_like_spans.size() || !shelf_like_spans[s]) continue;
     ev.interior_leg_points += inside;

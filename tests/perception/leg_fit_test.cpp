@@ -160,8 +160,8 @@ std::optional<double> FirstHit(const geometry::LegModel& leg, const geometry::Po
 
 // RMS error across the beam, in beam steps at the mean range, of legs fitted from returns cut
 // by dropouts: with the one edge the scan still shows, and without it. 300 legs at random beam
-// phase and heading, range_m to range_m + 0.2 (or + 0.5) m, 10 mm range noise; `cut` drops
-// returns (false: leg skipped, too few beams) and says which edge stays seen.
+// phase and heading, range_m to range_m + depth_m away, 10 mm range noise; `cut` drops returns
+// (false: leg skipped, too few beams) and says which edge stays seen. Prints both, named `what`.
 struct CutLegErrors {
   double with_edge_steps = 0.0;
   double blind_steps = 0.0;
@@ -169,8 +169,8 @@ struct CutLegErrors {
 };
 
 template <typename Cut>
-CutLegErrors CutLegAcrossErrors(const geometry::LegModel& leg, double range_m, double depth_m,
-                                std::uint64_t seed, Cut cut) {
+CutLegErrors CutLegAcrossErrors(const char* what, const geometry::LegModel& leg, double range_m,
+                                double depth_m, std::uint64_t seed, Cut cut) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> noise(0.0, 0.01);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -206,6 +206,10 @@ CutLegErrors CutLegAcrossErrors(const geometry::LegModel& leg, double range_m, d
   const double step = (range_m + 0.5 * depth_m) * kAlpha;
   out.with_edge_steps = std::sqrt(sum_sq_edge / out.draws) / step;
   out.blind_steps = std::sqrt(sum_sq_blind / out.draws) / step;
+  std::printf(
+      "[ leg fit ] %s, %s: RMS across the beam %.2f steps with the edge seen, %.2f without\n",
+      leg.shape == geometry::LegShape::kCircle ? "round" : "box", what, out.with_edge_steps,
+      out.blind_steps);
   return out;
 }
 
@@ -218,18 +222,14 @@ CutLegErrors CutLegAcrossErrors(const geometry::LegModel& leg, double range_m, d
 // it).
 TEST(LegFitTest, ADropoutOnOneSideIsPlacedByTheEdgeSeen) {
   for (const auto& leg : {Round26(), Square40()}) {
-    const CutLegErrors e = CutLegAcrossErrors(
-        leg, 1.2, 0.3, 3, [](std::vector<ScanPoint>& pts, SilhouetteEdges& edges) {
-          if (pts.size() < 4 || pts.size() > 7) return false;
-          pts.resize(pts.size() - 2);  // the dropout
-          edges.before_rad = pts.front().angle - 0.5 * kAlpha;
-          return true;
-        });
-    std::printf(
-        "[ leg fit ] %s, dropout on one side: RMS across the beam %.2f steps with the "
-        "edge seen, %.2f without\n",
-        leg.shape == geometry::LegShape::kCircle ? "round" : "box", e.with_edge_steps,
-        e.blind_steps);
+    const CutLegErrors e =
+        CutLegAcrossErrors("dropout on one side", leg, 1.2, 0.3, 3,
+                           [](std::vector<ScanPoint>& pts, SilhouetteEdges& edges) {
+                             if (pts.size() < 4 || pts.size() > 7) return false;
+                             pts.resize(pts.size() - 2);  // the dropout
+                             edges.before_rad = pts.front().angle - 0.5 * kAlpha;
+                             return true;
+                           });
     ASSERT_GT(e.draws, 50);
     EXPECT_LT(e.with_edge_steps, 0.5);
     EXPECT_GT(e.blind_steps, e.with_edge_steps + 0.2);
@@ -244,17 +244,12 @@ TEST(LegFitTest, ADropoutOnOneSideIsPlacedByTheEdgeSeen) {
 TEST(LegFitTest, ASingleReturnBesideASeenEdgeIsPlacedByThatEdge) {
   for (const auto& leg : {Round26(), Square40()}) {
     const CutLegErrors e = CutLegAcrossErrors(
-        leg, 2.5, 0.5, 4, [](std::vector<ScanPoint>& pts, SilhouetteEdges& edges) {
+        "single return", leg, 2.5, 0.5, 4, [](std::vector<ScanPoint>& pts, SilhouetteEdges& edges) {
           if (pts.size() < 2) return false;
           pts.erase(pts.begin(), pts.end() - 1);  // dropouts on all but the last beam
           edges.after_rad = pts.back().angle + 0.5 * kAlpha;
           return true;
         });
-    std::printf(
-        "[ leg fit ] %s, single return: RMS across the beam %.2f steps with the edge "
-        "seen, %.2f without\n",
-        leg.shape == geometry::LegShape::kCircle ? "round" : "box", e.with_edge_steps,
-        e.blind_steps);
     ASSERT_GT(e.draws, 100);
     EXPECT_LT(e.with_edge_steps, 0.5);
     EXPECT_LT(e.with_edge_steps, e.blind_steps);
