@@ -53,6 +53,7 @@ nlohmann::json DetectionStatsToJson(const perception::DetectionStats& s) {
           {"trailing_removed", s.trailing_removed},
           {"leg_candidates", s.leg_candidates},
           {"leg_sets", s.leg_sets},
+          {"completed_sets", s.completed_sets},
           {"model_pairs", s.model_pairs},
           {"hypotheses", s.hypotheses},
           {"range_noise_m", s.range_noise_m},

@@ -97,6 +97,14 @@ void ReadPresetGate(YamlFields f, perception::PresetGateConfig& c) {
   f.RejectUnknown();
 }
 
+void ReadCompletion(YamlFields f, perception::LegCompletionConfig& c) {
+  f.Read("enabled", c.enabled);
+  f.Read("corner_margin_m", c.corner_margin_m);
+  f.Read("max_offset_m", c.max_offset_m);
+  f.Read("max_yaw_offset_rad", c.max_yaw_offset_rad);
+  f.RejectUnknown();
+}
+
 }  // namespace
 
 perception::DetectorConfig ReadDetectorConfig(const std::string& path) {
@@ -110,6 +118,7 @@ perception::DetectorConfig ReadDetectorConfig(const std::string& path) {
   ReadShelfFit(YamlFields(top.Child("shelf_fit"), path, "shelf_fit"), config.shelf_fit);
   ReadEvidence(YamlFields(top.Child("evidence"), path, "evidence"), config.evidence);
   ReadPresetGate(YamlFields(top.Child("preset_gate"), path, "preset_gate"), config.preset_gate);
+  ReadCompletion(YamlFields(top.Child("completion"), path, "completion"), config.completion);
   top.RejectUnknown();
   top.Reject(perception::FindConfigViolation(config));  // the rules live with the struct
   return config;

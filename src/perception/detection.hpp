@@ -65,6 +65,7 @@ struct DetectionStats {
   int leg_sets = 0;            ///< 3- and 4-leg sets that passed the geometric search
   int model_pairs = 0;         ///< points-model pairs that passed Eq. 2 screening
   int hypotheses = 0;          ///< points-model pairs fitted and scored (one per pair)
+  int completed_sets = 0;      ///< leg sets completed from two candidates (CompleteLegSets)
   double range_noise_m = 0.0;  ///< [m] range noise the scan shows (EstimateRangeNoise; 0: unknown)
   RejectionCounts rejected;    ///< why hypotheses were not returned
 };

@@ -11,6 +11,7 @@
 #include "geometry/angle.hpp"
 #include "perception/footprint_overlap.hpp"
 #include "perception/leg_competition.hpp"
+#include "perception/leg_completion.hpp"
 #include "perception/leg_fit.hpp"
 #include "perception/leg_search.hpp"
 #include "perception/model_match.hpp"
@@ -291,7 +292,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   stats.valid_points = static_cast<int>(points.size());
 
   // 3.1 preprocessing.
-  const PreprocessOutput pre =
+  PreprocessOutput pre =
       Preprocess(points, angle_increment_rad, T_lidar_preset, models_, config_.preprocess);
   stats.roi_points = pre.roi_points;
   stats.clusters = pre.clusters;
@@ -370,7 +371,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     if (explain) result.hypotheses.push_back(std::move(record));
   };
   std::vector<Hypothesis> hypotheses;
-  for (const LegSet& set : sets) {
+  // Weighs one leg set; its best hypothesis, if any, joins the competition.
+  auto consider = [&](const LegSet& set) {
     bool weighed = false;
     std::optional<Hypothesis> best = score_set(set, weighed);
     // One leg of four may be wrong (a mixed echo behind a far leg, a post beside a corner) and
@@ -403,7 +405,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       }
     }
     if (best) hypotheses.push_back(std::move(*best));
-  }
+  };
+  for (const LegSet& set : sets) consider(set);
 
   // Hypotheses compete for legs: the disjoint set with the most support wins. The weight is
   // the confidence times four, i.e. the expected number of legs it stands for, so two real
@@ -413,46 +416,72 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   // lying across a real shelf loses to it; eval-layouts --scenes-per-class 1000 --seed0 5001:
   // phantoms 7 -> 6, recall unchanged). The leg rectangles are shrunk by overlap_margin_m so
   // that fit errors of touching neighbours do not count.
-  std::vector<std::array<int, 4>> legs;
-  std::vector<double> weights;
-  std::vector<OrientedRect> footprints;
-  for (const Hypothesis& h : hypotheses) {
-    legs.push_back(h.clusters);
-    weights.push_back(4.0 * h.detection.confidence);
-    const double m = config_.evidence.overlap_margin_m;
-    footprints.push_back({h.detection.T_lidar_shelf, 0.5 * h.length_m - m, 0.5 * h.width_m - m});
-  }
-  std::vector<std::vector<char>> overlap(hypotheses.size(),
-                                         std::vector<char>(hypotheses.size(), 0));
-  for (std::size_t i = 0; i < footprints.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      overlap[i][j] = overlap[j][i] = RectsOverlap(footprints[i], footprints[j]) ? 1 : 0;
+  auto compete = [&](const PresetGateConfig& gate) {
+    std::vector<std::array<int, 4>> legs;
+    std::vector<double> weights;
+    std::vector<OrientedRect> footprints;
+    for (const Hypothesis& h : hypotheses) {
+      legs.push_back(h.clusters);
+      weights.push_back(4.0 * h.detection.confidence);
+      const double m = config_.evidence.overlap_margin_m;
+      footprints.push_back({h.detection.T_lidar_shelf, 0.5 * h.length_m - m, 0.5 * h.width_m - m});
     }
-  }
-  const std::vector<int> picked = SelectDisjoint(legs, weights, overlap);
-  std::vector<Detection> kept;
-  for (std::size_t i = 0; i < hypotheses.size(); ++i) {
-    Hypothesis& h = hypotheses[i];
-    const bool won = std::find(picked.begin(), picked.end(), static_cast<int>(i)) != picked.end();
-    if (!won) {
-      h.record.verdict = Verdict::kLostLegs;
-    } else if (T_lidar_preset && !NearPreset(h.detection, *T_lidar_preset, config_.preset_gate)) {
-      h.record.verdict = Verdict::kOffPreset;
+    std::vector<std::vector<char>> overlap(hypotheses.size(),
+                                           std::vector<char>(hypotheses.size(), 0));
+    for (std::size_t i = 0; i < footprints.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        overlap[i][j] = overlap[j][i] = RectsOverlap(footprints[i], footprints[j]) ? 1 : 0;
+      }
     }
-    Count(h.record.verdict, stats.rejected);
-    if (explain) result.hypotheses.push_back(h.record);
-    if (h.record.verdict == Verdict::kReturned) kept.push_back(std::move(h.detection));
-  }
-  // Ranking: with a preset, nearest to it first (paper 3.2); otherwise the most confident.
-  std::stable_sort(kept.begin(), kept.end(), [&](const Detection& a, const Detection& b) {
-    if (T_lidar_preset) {
-      return geometry::Distance(a.T_lidar_shelf, *T_lidar_preset) <
-             geometry::Distance(b.T_lidar_shelf, *T_lidar_preset);
+    const std::vector<int> picked = SelectDisjoint(legs, weights, overlap);
+    std::vector<Detection> kept;
+    for (std::size_t i = 0; i < hypotheses.size(); ++i) {
+      Hypothesis& h = hypotheses[i];
+      const bool won = std::find(picked.begin(), picked.end(), static_cast<int>(i)) != picked.end();
+      if (!won) {
+        h.record.verdict = Verdict::kLostLegs;
+      } else if (T_lidar_preset && !NearPreset(h.detection, *T_lidar_preset, gate)) {
+        h.record.verdict = Verdict::kOffPreset;
+      }
+      Count(h.record.verdict, stats.rejected);
+      if (explain) result.hypotheses.push_back(h.record);
+      if (h.record.verdict == Verdict::kReturned) kept.push_back(std::move(h.detection));
     }
-    if (a.legs_visible != b.legs_visible) return a.legs_visible > b.legs_visible;
-    return a.confidence > b.confidence;
-  });
-  result.detections = std::move(kept);
+    // Ranking: with a preset, nearest to it first (paper 3.2); otherwise the most confident.
+    std::stable_sort(kept.begin(), kept.end(), [&](const Detection& a, const Detection& b) {
+      if (T_lidar_preset) {
+        return geometry::Distance(a.T_lidar_shelf, *T_lidar_preset) <
+               geometry::Distance(b.T_lidar_shelf, *T_lidar_preset);
+      }
+      if (a.legs_visible != b.legs_visible) return a.legs_visible > b.legs_visible;
+      return a.confidence > b.confidence;
+    });
+    return kept;
+  };
+  result.detections = compete(config_.preset_gate);
+
+  // Nothing near the preset, yet the map says a shelf stands there: a leg in sight may have
+  // never become a candidate (one return beside an occluder, a return the trailing filter took
+  // for a mixed point, a leg merged with a person's). Two candidates and the preset fix where
+  // the shelf's other legs stand; the scan's returns there are cut out as legs, and the sets
+  // go through the same fit, screening, evidence and competition as any other.
+  if (result.detections.empty() && T_lidar_preset && config_.completion.enabled) {
+    const CompletedLegSets completed =
+        CompleteLegSets(points, pre, centres, models_, *T_lidar_preset, config_.completion,
+                        config_.leg_search, config_.preprocess);
+    for (const Cluster& c : completed.legs) {
+      const double r = c.centroid.norm();
+      centres.push_back(r > half_depth ? Eigen::Vector2d(c.centroid * (1.0 + half_depth / r))
+                                       : c.centroid);
+      pre.candidates.push_back(c);
+    }
+    stats.completed_sets = static_cast<int>(completed.sets.size());
+    hypotheses.clear();
+    for (const LegSet& set : completed.sets) consider(set);
+    // Returned only within the completion's own, tighter gate (LegCompletionConfig).
+    result.detections =
+        compete({config_.completion.max_offset_m, config_.completion.max_yaw_offset_rad});
+  }
   return result;
 }
 

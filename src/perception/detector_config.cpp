@@ -85,6 +85,9 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   const auto& g = c.preset_gate;
   k.Check(g.max_offset_m >= 0.0, "preset_gate.max_offset_m", ">= 0 (0: off)");
   k.Check(g.max_yaw_offset_rad >= 0.0, "preset_gate.max_yaw_offset_rad", ">= 0 (0: off)");
+  k.Check(c.completion.corner_margin_m >= 0.0, "completion.corner_margin_m", ">= 0");
+  k.Check(c.completion.max_offset_m > 0.0, "completion.max_offset_m", "> 0");
+  k.Check(c.completion.max_yaw_offset_rad > 0.0, "completion.max_yaw_offset_rad", "> 0");
   return k.Result();
 }
 

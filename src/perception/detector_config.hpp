@@ -140,6 +140,21 @@ struct PresetGateConfig {
                                      ///< (pi, or pi/2 for a square one); 0 turns it off
 };
 
+/// Completing a shelf from two leg candidates when the search of paper 3.2 found nothing near
+/// the preset (CompleteLegSets): a leg in sight whose returns never became a candidate (one
+/// return beside an occluder or taken for a mixed point, a leg merged with a person's) is cut
+/// from the scan at the corner the two legs and the preset predict.
+/// A completed shelf leans on the map more than one the search found whole, so it must stand
+/// where the map says within the map's own error (the layouts' presets: up to 0.2 m, 0.1 rad),
+/// not merely inside the preset gate, which also allows for shelves pushed about.
+struct LegCompletionConfig {
+  bool enabled = true;               ///< with a preset and nothing found near it, complete pairs
+  double corner_margin_m = 0.03;     ///< [m] returns within half the leg's extent plus this of a
+                                     ///< predicted corner are its leg
+  double max_offset_m = 0.25;        ///< [m] a completed shelf's centre distance from the preset
+  double max_yaw_offset_rad = 0.15;  ///< [rad] its heading difference (modulo symmetry)
+};
+
 /// All detector parameters, one struct per stage (config/detector.yaml).
 struct DetectorConfig {
   PreprocessConfig preprocess;
@@ -149,6 +164,7 @@ struct DetectorConfig {
   ShelfFitConfig shelf_fit;
   EvidenceConfig evidence;
   PresetGateConfig preset_gate;
+  LegCompletionConfig completion;
 };
 
 /// An impossible parameter: its dotted key (e.g. `preprocess.cluster_gap_m`) and the rule.

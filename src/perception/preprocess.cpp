@@ -124,6 +124,11 @@ double MaxLegExtent(const std::vector<geometry::ShelfModel>& models, const Prepr
                                config.leg_extent_noise_sigmas * std::sqrt(2.0) * range_noise_m);
 }
 
+double SplitStep(const PreprocessConfig& config, double range_noise_m) {
+  return std::max(config.split_min_step_m,
+                  config.split_noise_steps * std::sqrt(2.0) * range_noise_m);
+}
+
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
                  double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
                  const PreprocessConfig& config, double max_extent_m) {
@@ -162,8 +167,7 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   out.spans = ClusterSpans(out.points, angle_increment_rad, config);
   out.range_noise_m = EstimateRangeNoise(out.points, out.spans).sigma_m;
   const double max_leg_extent = MaxLegExtent(models, config, out.range_noise_m);
-  const double split_step = std::max(config.split_min_step_m,
-                                     config.split_noise_steps * std::sqrt(2.0) * out.range_noise_m);
+  const double split_step = SplitStep(config, out.range_noise_m);
   const double surface_tolerance =
       std::max(config.surface_tolerance_m, config.surface_noise_sigmas * out.range_noise_m);
   // `piece` (a span or part of span si) as a candidate, when it has min_points and fits a leg.

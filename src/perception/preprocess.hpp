@@ -75,6 +75,11 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& points, double angle_increment_
 double MaxLegExtent(const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config,
                     double range_noise_m);
 
+/// The depth step that sets an object off from what stands beside or behind it (cutting merged
+/// clusters, an outline's edge): split_min_step_m, or split_noise_steps times the noise of a
+/// difference of two ranges (sqrt 2 * range_noise_m) when that is more.
+double SplitStep(const PreprocessConfig& config, double range_noise_m);
+
 /// True when a cluster's extent is at most max_extent_m (MaxLegExtent of the scan) and its point
 /// count fits a leg of some model at its range.
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,

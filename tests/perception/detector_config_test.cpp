@@ -151,6 +151,12 @@ const RuleCase kCases[] = {
      [](auto& c) { c.preset_gate.max_offset_m = -0.1; }},
     {"preset_gate_yaw", "preset_gate.max_yaw_offset_rad",
      [](auto& c) { c.preset_gate.max_yaw_offset_rad = -0.1; }},
+    {"completion_margin", "completion.corner_margin_m",
+     [](auto& c) { c.completion.corner_margin_m = -0.01; }},
+    {"completion_offset", "completion.max_offset_m",
+     [](auto& c) { c.completion.max_offset_m = 0.0; }},
+    {"completion_yaw", "completion.max_yaw_offset_rad",
+     [](auto& c) { c.completion.max_yaw_offset_rad = 0.0; }},
 };
 
 TEST(DetectorConfigTest, DefaultsPass) { EXPECT_FALSE(FindConfigViolation(DetectorConfig{})); }

@@ -70,33 +70,40 @@ inline std::vector<ScanPoint> CastCircle(const Eigen::Vector2d& centre, double r
   return out;
 }
 
+/// The range at which the ray from the origin at `angle` first hits the oriented box (slab test
+/// in the box frame); nullopt when it misses.
+inline std::optional<double> RayBoxRange(const geometry::Pose2& T_lidar_box, double length,
+                                         double width, double angle) {
+  const geometry::Pose2 T_box_lidar = T_lidar_box.inverse();
+  const Eigen::Vector2d o = T_box_lidar * Eigen::Vector2d::Zero();
+  const Eigen::Vector2d d =
+      T_box_lidar.rotation() * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+  double t0 = -1e9, t1 = 1e9;
+  const double h[2] = {0.5 * length, 0.5 * width};
+  for (int k = 0; k < 2; ++k) {
+    if (std::abs(d[k]) < 1e-12) {
+      if (std::abs(o[k]) > h[k]) return std::nullopt;
+      continue;
+    }
+    double ta = (-h[k] - o[k]) / d[k], tb = (h[k] - o[k]) / d[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  if (t0 > t1 || t0 <= 0.0) return std::nullopt;
+  return t0;
+}
+
 inline std::vector<ScanPoint> CastBox(const geometry::Pose2& T_lidar_box, double length,
                                       double width, double angle_increment) {
   std::vector<ScanPoint> out;
-  const geometry::Pose2 T_box_lidar = T_lidar_box.inverse();
   const double bearing = std::atan2(T_lidar_box.y, T_lidar_box.x);
   const double half = std::atan2(std::hypot(length, width), T_lidar_box.translation().norm());
   int beam = 0;
   for (double a = bearing - half; a <= bearing + half; a += angle_increment, ++beam) {
-    // Slab test in the box frame.
-    const Eigen::Vector2d o = T_box_lidar * Eigen::Vector2d::Zero();
-    const Eigen::Vector2d d = T_box_lidar.rotation() * Eigen::Vector2d(std::cos(a), std::sin(a));
-    double t0 = -1e9, t1 = 1e9;
-    const double h[2] = {0.5 * length, 0.5 * width};
-    bool hit = true;
-    for (int k = 0; k < 2; ++k) {
-      if (std::abs(d[k]) < 1e-12) {
-        if (std::abs(o[k]) > h[k]) hit = false;
-        continue;
-      }
-      double ta = (-h[k] - o[k]) / d[k], tb = (h[k] - o[k]) / d[k];
-      if (ta > tb) std::swap(ta, tb);
-      t0 = std::max(t0, ta);
-      t1 = std::min(t1, tb);
-    }
-    if (!hit || t0 > t1 || t0 <= 0.0) continue;
-    const Eigen::Vector2d p(t0 * std::cos(a), t0 * std::sin(a));
-    out.push_back({p, t0, a, beam});
+    const std::optional<double> t = RayBoxRange(T_lidar_box, length, width, a);
+    if (!t) continue;
+    out.push_back({Eigen::Vector2d(*t * std::cos(a), *t * std::sin(a)), *t, a, beam});
   }
   return out;
 }

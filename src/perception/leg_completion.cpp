@@ -1,0 +1,252 @@
+#include "perception/leg_completion.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "geometry/angle.hpp"
+#include "perception/silhouette_edges.hpp"
+#include "perception/surface_continuation.hpp"
+
+namespace shelfdock::perception {
+namespace {
+
+// The returns within `radius_m` of `corner`, from `near` (indices into `points`, beam order),
+// as one cluster; empty when there are none.
+Cluster CutLeg(const std::vector<ScanPoint>& points, const std::vector<int>& near,
+               const Eigen::Vector2d& corner, double radius_m) {
+  Cluster c;
+  for (int i : near) {
+    if ((points[i].p - corner).norm() <= radius_m) c.points.push_back(points[i]);
+  }
+  if (c.points.empty()) return c;
+  for (const ScanPoint& q : c.points) c.centroid += q.p;
+  c.centroid /= static_cast<double>(c.points.size());
+  for (const ScanPoint& q : c.points) {
+    c.extent_m = std::max(c.extent_m, (q.p - c.points.front().p).norm());
+  }
+  return c;
+}
+
+// The index of the first return of beam `beam` or later (points in beam order).
+std::size_t IndexOfBeam(const std::vector<ScanPoint>& points, int beam) {
+  const auto it = std::lower_bound(points.begin(), points.end(), beam,
+                                   [](const ScanPoint& q, int b) { return q.beam < b; });
+  return static_cast<std::size_t>(it - points.begin());
+}
+
+// The return of beam `beam`, if it is valid.
+const ScanPoint* FindBeam(const std::vector<ScanPoint>& points, int beam) {
+  const std::size_t i = IndexOfBeam(points, beam);
+  return i < points.size() && points[i].beam == beam ? &points[i] : nullptr;
+}
+
+// True when the object the cut belongs to goes on past it: the next beam out on either side
+// returned from within `step_m` of the cut's outer return. A leg is a small object: its
+// outline ends at a farther return (the background), a nearer one (an occluder) or none; a
+// wall or a box side passing through the corner continues.
+// A surface seen at a grazing angle steps by more than that from beam to beam: it continues
+// too when the cut's outer return lies within `tolerance_m` of the line through the next two
+// returns out (each at most `max_step_m` from the one before).
+bool ContinuesPastCut(const std::vector<ScanPoint>& points, const Cluster& c, double step_m,
+                      double max_step_m, double tolerance_m) {
+  const int outward = c.points.back().beam >= c.points.front().beam ? 1 : -1;
+  for (const auto& [outer, dir] :
+       {std::pair{c.points.front(), -outward}, std::pair{c.points.back(), outward}}) {
+    const ScanPoint* next = FindBeam(points, outer.beam + dir);
+    if (next == nullptr) continue;
+    if (std::abs(next->range - outer.range) < step_m) return true;
+    const ScanPoint* after = FindBeam(points, outer.beam + 2 * dir);
+    if (after == nullptr || (next->p - outer.p).norm() > max_step_m ||
+        (after->p - next->p).norm() > max_step_m) {
+      continue;
+    }
+    const Eigen::Vector2d u = (after->p - next->p).normalized();
+    const Eigen::Vector2d v = outer.p - next->p;
+    if (std::abs(u.x() * v.y() - u.y() * v.x()) < tolerance_m) return true;
+  }
+  return false;
+}
+
+// True when the cut is a single return whose range lies between those of its two beam
+// neighbours, a depth step from each: what a mixed point looks like (the beam's footprint
+// straddling a nearer object's edge and the background, Eq. 1's trailing point). A leg seen by
+// one return beside an occluder looks the same, so such a return cannot vouch for a corner; a
+// lone return beside a dropout, or nearer than both neighbours, is no mixed point of them.
+bool MayBeMixedPoint(const std::vector<ScanPoint>& points, const Cluster& c, double step_m) {
+  if (c.points.size() != 1) return false;
+  const ScanPoint& q = c.points.front();
+  const ScanPoint* before = FindBeam(points, q.beam - 1);
+  const ScanPoint* after = FindBeam(points, q.beam + 1);
+  if (before == nullptr || after == nullptr) return false;
+  const double near = std::min(before->range, after->range);
+  const double far = std::max(before->range, after->range);
+  return q.range > near + step_m && q.range < far - step_m;
+}
+
+// What tells a leg from part of something else, from the scan's returns around a cut.
+struct Surroundings {
+  double step_m = 0.0;       // depth step that sets an object off (SplitStep)
+  double max_step_m = 0.0;   // farthest beam neighbour on one surface (surface_max_step_m)
+  double min_chord_m = 0.0;  // a surface is wider than a leg (MaxLegExtent)
+  double tolerance_m = 0.0;  // a return this close to a surface's line lies on it
+};
+
+// True when the cut's returns can be a leg of their own: the object does not go on past them,
+// they do not lie on the line through their beam neighbours (a surface seen at a grazing angle,
+// or mixed points ramping from an object to its background: ContinuesSurface) and a single one
+// is no mixed point.
+bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const Surroundings& s) {
+  if (ContinuesPastCut(points, c, s.step_m, s.max_step_m, s.tolerance_m) ||
+      MayBeMixedPoint(points, c, s.step_m)) {
+    return false;
+  }
+  const std::size_t begin = IndexOfBeam(points, c.points.front().beam);
+  const std::size_t end = IndexOfBeam(points, c.points.back().beam + 1);
+  return !ContinuesSurface(points, begin, end, s.max_step_m, s.min_chord_m, s.tolerance_m);
+}
+
+// True when the shelf at `T` stands where the preset gate lets a detection through.
+bool PassesGate(const geometry::Pose2& T, const geometry::ShelfModel& model,
+                const geometry::Pose2& preset, const LegCompletionConfig& gate) {
+  if ((T.translation() - preset.translation()).norm() > gate.max_offset_m) return false;
+  const double period = model.IsSquare() ? 0.5 * std::numbers::pi : std::numbers::pi;
+  const double d = geometry::AngleDiff(T.yaw, preset.yaw);
+  const double off = std::abs(d - period * std::round(d / period));
+  return off <= gate.max_yaw_offset_rad;
+}
+
+}  // namespace
+
+CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
+                                 const PreprocessOutput& pre,
+                                 const std::vector<Eigen::Vector2d>& centres,
+                                 const std::vector<geometry::ShelfModel>& models,
+                                 const geometry::Pose2& T_lidar_preset,
+                                 const LegCompletionConfig& config, const LegSearchConfig& search,
+                                 const PreprocessConfig& preprocess) {
+  CompletedLegSets out;
+  const int n = static_cast<int>(centres.size());
+  if (!config.enabled || n < 2 || models.empty()) return out;
+  const int base = static_cast<int>(pre.candidates.size());
+  const Surroundings look{SplitStep(preprocess, pre.range_noise_m), preprocess.surface_max_step_m,
+                          MaxLegExtent(models, preprocess, pre.range_noise_m),
+                          std::max(preprocess.surface_tolerance_m,
+                                   preprocess.surface_noise_sigmas * pre.range_noise_m)};
+
+  // Only returns near the preset can stand at a completed corner.
+  double reach = 0.0;
+  for (const auto& m : models) {
+    reach = std::max(reach, 0.5 * m.Diagonal() + 0.5 * m.leg.Extent() + config.corner_margin_m);
+  }
+  double offset = config.max_offset_m;
+  for (const auto& c : centres) {
+    offset = std::max(offset, (c - T_lidar_preset.translation()).norm());
+  }
+  reach += offset;
+  std::vector<int> near;
+  for (std::size_t i = 0; i < scan_points.size(); ++i) {
+    if ((scan_points[i].p - T_lidar_preset.translation()).norm() <= reach) {
+      near.push_back(static_cast<int>(i));
+    }
+  }
+  // The span of pre.points each beam ended in (-1: removed by the trailing filter).
+  int max_beam = 0;
+  for (const ScanPoint& q : scan_points) max_beam = std::max(max_beam, q.beam);
+  for (const ScanPoint& q : pre.points) max_beam = std::max(max_beam, q.beam);
+  std::vector<int> span_of_beam(static_cast<std::size_t>(max_beam) + 1, -1);
+  for (std::size_t s = 0; s < pre.spans.size(); ++s) {
+    for (std::size_t i = pre.spans[s].begin; i < pre.spans[s].end; ++i) {
+      span_of_beam[static_cast<std::size_t>(pre.points[i].beam)] = static_cast<int>(s);
+    }
+  }
+
+  // Beams whose returns already stand in a candidate: a leg there had its chance in the
+  // search of paper 3.2, with its tolerances; completing with it would judge the same legs
+  // again more loosely (in clutter, two posts and a third a few centimetres off a model).
+  std::vector<char> in_candidate(static_cast<std::size_t>(max_beam) + 1, 0);
+  for (const Cluster& c : pre.candidates) {
+    for (const ScanPoint& q : c.points) in_candidate[static_cast<std::size_t>(q.beam)] = 1;
+  }
+  auto already_candidate = [&](const Cluster& c) {
+    return std::all_of(c.points.begin(), c.points.end(), [&](const ScanPoint& q) {
+      return in_candidate[static_cast<std::size_t>(q.beam)] != 0;
+    });
+  };
+
+  std::set<std::array<int, 4>> seen_sets;
+  auto leg_index = [&](Cluster&& c) {
+    for (std::size_t k = 0; k < out.legs.size(); ++k) {
+      if (out.legs[k].points.size() == c.points.size() &&
+          out.legs[k].points.front().beam == c.points.front().beam) {
+        return base + static_cast<int>(k);
+      }
+    }
+    c.span = span_of_beam[static_cast<std::size_t>(c.points.front().beam)];
+    c.edges = FindSilhouetteEdges(scan_points, c.points.front(), c.points.back(), look.step_m);
+    out.legs.push_back(std::move(c));
+    return base + static_cast<int>(out.legs.size()) - 1;
+  };
+
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const Eigen::Vector2d ab = centres[j] - centres[i];
+      const double d = ab.norm();
+      for (const auto& model : models) {
+        const auto corners = model.LegCentres();
+        const double radius = 0.5 * model.leg.Extent() + config.corner_margin_m;
+        for (int k1 = 0; k1 < 4; ++k1) {
+          for (int k2 = 0; k2 < 4; ++k2) {
+            if (k1 == k2) continue;
+            const Eigen::Vector2d e = corners[k2] - corners[k1];
+            if (std::abs(d - e.norm()) > search.pair_tolerance_m) continue;
+            // Candidate i at corner k1, j at k2: the pose that puts the corners' midpoint on
+            // the candidates' and turns the model's edge onto theirs.
+            geometry::Pose2 T;
+            T.yaw = geometry::WrapAngle(std::atan2(ab.y(), ab.x()) - std::atan2(e.y(), e.x()));
+            const Eigen::Vector2d t = 0.5 * (centres[i] + centres[j]) -
+                                      T.rotation() * (0.5 * (corners[k1] + corners[k2]));
+            T.x = t.x();
+            T.y = t.y();
+            if (!PassesGate(T, model, T_lidar_preset, config)) continue;
+            std::array<int, 4> at{-1, -1, -1, -1};
+            at[k1] = i;
+            at[k2] = j;
+            int added = 0;
+            for (int k = 0; k < 4; ++k) {
+              if (at[k] >= 0) continue;
+              Cluster c = CutLeg(scan_points, near, T * corners[k], radius);
+              if (c.points.empty() || already_candidate(c) || !StandsAlone(scan_points, c, look)) {
+                continue;
+              }
+              at[k] = leg_index(std::move(c));
+              ++added;
+            }
+            if (added == 0) continue;
+            LegSet set;
+            if (added == 2) {
+              set = LegSet{at, 4};
+            } else {
+              // Three legs in cyclic order from the one after the missing corner: the middle
+              // one is the right-angle corner (SearchLegSets' convention).
+              const int missing =
+                  static_cast<int>(std::find(at.begin(), at.end(), -1) - at.begin());
+              set = LegSet{
+                  {at[(missing + 1) % 4], at[(missing + 2) % 4], at[(missing + 3) % 4], -1}, 3};
+            }
+            std::array<int, 4> key = set.legs;
+            std::sort(key.begin(), key.end());
+            if (!seen_sets.insert(key).second) continue;
+            out.sets.push_back(set);
+            if (static_cast<int>(out.sets.size()) >= search.max_leg_sets) return out;
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace shelfdock::perception

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/pose2.hpp"
+#include "geometry/shelf_model.hpp"
+#include "perception/detector_config.hpp"
+#include "perception/leg_search.hpp"
+#include "perception/preprocess.hpp"
+#include "perception/scan_point.hpp"
+
+namespace shelfdock::perception {
+
+/// Leg sets completed from two candidates: the legs cut from the scan at the other corners
+/// (to be appended to PreprocessOutput::candidates, in this order) and the sets using them.
+struct CompletedLegSets {
+  std::vector<Cluster> legs;  ///< new candidates; index k is candidate base + k
+  std::vector<LegSet> sets;   ///< 3 or 4 legs, in cyclic order as SearchLegSets gives them
+};
+
+/// Two candidates a model's side or diagonal apart fix the shelf up to which side of them it
+/// stands on; the preset tells which. Where that shelf has its other legs, the scan's returns
+/// within half the leg's extent plus corner_margin_m of the corner are cut out as a leg, from
+/// `scan_points` (every valid return, before the trailing filter: a lone return between a
+/// dropout and the background is taken for a mixed point there). Used when the search of paper
+/// 3.2 found nothing near the preset because a leg in sight never became a candidate: seen
+/// by one return beside an occluder, or merged with a person's leg. Only shelves within the
+/// completion's own preset gate (max_offset_m, max_yaw_offset_rad) are completed; the sets then go
+/// through the same fit, model screening and evidence as any other. `centres` are the candidates'
+/// search centres (detector.cpp), `split_step_m` the depth step that marks an outline's edge
+/// (FindSilhouetteEdges).
+CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
+                                 const PreprocessOutput& pre,
+                                 const std::vector<Eigen::Vector2d>& centres,
+                                 const std::vector<geometry::ShelfModel>& models,
+                                 const geometry::Pose2& T_lidar_preset,
+                                 const LegCompletionConfig& config, const LegSearchConfig& search,
+                                 const PreprocessConfig& preprocess);
+
+}  // namespace shelfdock::perception

@@ -1,0 +1,203 @@
+// Completing a shelf from two leg candidates and the preset (CompleteLegSets, and the detector's
+// second pass): a leg in sight whose returns never became a candidate is cut from the scan at
+// the corner the two legs predict, unless those returns could be something else.
+//
+// The scene, noise free, a WLR-716 fan from angle 0: a 1075 x 883 shelf 1.7 m out at bearing
+// 0.5 rad, turned along the ray, so its front legs (corners 0 and 3 of LegCentres) stand 1.2 m
+// out and its back legs (1 and 2) 2.3 m out. A wide box at 0.9 m hides back leg 2 whole;
+// another, beside back leg 1, leaves that leg one return (the outer one, next to the background
+// at 6 m); the beam between that return and the box is a dropout, or (in the mixed-point case)
+// the box itself.
+#include "perception/leg_completion.hpp"
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "perception/detector.hpp"
+#include "test_scenes.hpp"
+
+namespace shelfdock::perception {
+namespace {
+
+using testing::BeamPoint;
+using testing::kWlrAlpha;
+using testing::PaperModels;
+using testing::RayBoxRange;
+using testing::SymmetricYawError;
+
+constexpr double kBackground_m = 6.0;
+constexpr double kOccluder_m = 0.9;
+constexpr int kBeams = 271;    // 0 to 90 degrees
+constexpr int kHiddenLeg = 2;  // corner (LegCentres) hidden whole
+constexpr int kLoneLeg = 1;    // corner seen by one return
+
+const geometry::ShelfModel& Shelf() {
+  static const geometry::ShelfModel model = PaperModels()[1];  // t1-rect-1075x883
+  return model;
+}
+
+geometry::Pose2 TrueShelfPose() { return {1.7 * std::cos(0.5), 1.7 * std::sin(0.5), 0.5}; }
+
+enum class BesideTheLoneReturn { kDropout, kOccluder };
+
+// The beams of corner k's leg, first to last.
+std::pair<int, int> LegBeams(const std::array<std::optional<double>, kBeams>& leg_range) {
+  int first = -1, last = -1;
+  for (int b = 0; b < kBeams; ++b) {
+    if (!leg_range[b]) continue;
+    if (first < 0) first = b;
+    last = b;
+  }
+  return {first, last};
+}
+
+std::vector<ScanPoint> Scene(BesideTheLoneReturn beside) {
+  const geometry::Pose2 T = TrueShelfPose();
+  const auto corners = Shelf().LegCentres();
+  std::array<std::optional<double>, kBeams> range{};
+  std::array<std::array<std::optional<double>, kBeams>, 4> leg{};
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector2d c = T * corners[k];
+    const geometry::Pose2 T_leg(c.x(), c.y(), T.yaw);
+    for (int b = 0; b < kBeams; ++b) {
+      leg[k][b] = RayBoxRange(T_leg, Shelf().leg.length_m, Shelf().leg.width_m, b * kWlrAlpha);
+      if (leg[k][b] && (!range[b] || *leg[k][b] < *range[b])) range[b] = leg[k][b];
+    }
+  }
+  std::array<bool, kBeams> dropout{};
+  // A box 25 beams wide (0.13 m at 0.9 m, too wide for a leg) hides one back leg.
+  const auto [first_hidden, last_hidden] = LegBeams(leg[kHiddenLeg]);
+  for (int b = first_hidden - 11; b <= last_hidden + 11; ++b) range[b] = kOccluder_m;
+  // The other back leg (at the lower bearing) keeps its first beam's return; a box covers the
+  // leg's other beams and 25 beyond, toward the shelf's middle.
+  const auto [first, last] = LegBeams(leg[kLoneLeg]);
+  EXPECT_GE(last - first, 2) << "the leg must span three beams or more";
+  const int box_begin = beside == BesideTheLoneReturn::kDropout ? first + 2 : first + 1;
+  if (beside == BesideTheLoneReturn::kDropout) dropout[first + 1] = true;
+  for (int b = box_begin; b <= last + 25; ++b) range[b] = kOccluder_m;
+
+  std::vector<ScanPoint> points;
+  for (int b = 0; b < kBeams; ++b) {
+    if (!dropout[b]) points.push_back(BeamPoint(b, range[b].value_or(kBackground_m)));
+  }
+  return points;
+}
+
+// The detector's search centres: centroids pushed back by the smallest leg's half depth.
+std::vector<Eigen::Vector2d> Centres(const PreprocessOutput& pre) {
+  std::vector<Eigen::Vector2d> centres;
+  for (const Cluster& c : pre.candidates) {
+    const double r = c.centroid.norm();
+    centres.push_back(c.centroid * (1.0 + 0.013 / r));
+  }
+  return centres;
+}
+
+CompletedLegSets Complete(const std::vector<ScanPoint>& points, const geometry::Pose2& preset,
+                          const DetectorConfig& config = {}) {
+  const PreprocessOutput pre =
+      Preprocess(points, kWlrAlpha, preset, PaperModels(), config.preprocess);
+  return CompleteLegSets(points, pre, Centres(pre), PaperModels(), preset, config.completion,
+                         config.leg_search, config.preprocess);
+}
+
+TEST(LegCompletionTest, TheSceneLeavesTwoLegCandidatesSoTheSearchFindsNothing) {
+  const auto points = Scene(BesideTheLoneReturn::kDropout);
+  const Detector detector(PaperModels(), [] {
+    DetectorConfig c;
+    c.completion.enabled = false;
+    return c;
+  }());
+  const DetectionResult r = detector.DetectPoints(points, kWlrAlpha, TrueShelfPose());
+  EXPECT_TRUE(r.detections.empty());
+  EXPECT_EQ(r.stats.leg_sets, 0);
+}
+
+TEST(LegCompletionTest, ALoneReturnBesideADropoutCompletesTheShelfAtItsCorner) {
+  const auto points = Scene(BesideTheLoneReturn::kDropout);
+  const CompletedLegSets completed = Complete(points, TrueShelfPose());
+  ASSERT_FALSE(completed.sets.empty());
+  // The completed leg is the lone return, within the leg's half extent of its corner.
+  const Eigen::Vector2d corner = TrueShelfPose() * Shelf().LegCentres()[kLoneLeg];
+  bool found = false;
+  for (const Cluster& leg : completed.legs) {
+    if (leg.points.size() == 1 && (leg.points.front().p - corner).norm() < 0.03) found = true;
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(LegCompletionTest, TheDetectorReturnsTheCompletedShelfAtItsTruePose) {
+  const auto points = Scene(BesideTheLoneReturn::kDropout);
+  // The preset 0.1 m and 0.05 rad off, as a map would be.
+  const geometry::Pose2 truth = TrueShelfPose();
+  const geometry::Pose2 preset(truth.x + 0.1, truth.y, truth.yaw + 0.05);
+  const Detector detector(PaperModels());
+  const DetectionResult r = detector.DetectPoints(points, kWlrAlpha, preset);
+  ASSERT_EQ(r.detections.size(), 1u);
+  const Detection& d = r.detections.front();
+  EXPECT_EQ(d.model, Shelf().name);
+  EXPECT_EQ(d.legs_used, 3);
+  EXPECT_GT(r.stats.completed_sets, 0);
+  // Noise free, one leg by a single return: within 1 cm and 10 mrad of the truth.
+  EXPECT_LT((d.T_lidar_shelf.translation() - truth.translation()).norm(), 0.01);
+  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, truth.yaw, false), 0.01);
+}
+
+TEST(LegCompletionTest, WithoutAPresetNothingIsCompleted) {
+  const Detector detector(PaperModels());
+  const DetectionResult r =
+      detector.DetectPoints(Scene(BesideTheLoneReturn::kDropout), kWlrAlpha, std::nullopt);
+  EXPECT_TRUE(r.detections.empty());
+  EXPECT_EQ(r.stats.completed_sets, 0);
+}
+
+TEST(LegCompletionTest, AReturnBetweenANearerBoxAndTheBackgroundMayBeMixedAndDoesNotComplete) {
+  // The lone return sits right beside the box: as a mixed point of the box's edge would.
+  const CompletedLegSets completed =
+      Complete(Scene(BesideTheLoneReturn::kOccluder), TrueShelfPose());
+  EXPECT_TRUE(completed.sets.empty());
+  const Detector detector(PaperModels());
+  EXPECT_TRUE(
+      detector.DetectPoints(Scene(BesideTheLoneReturn::kOccluder), kWlrAlpha, TrueShelfPose())
+          .detections.empty());
+}
+
+TEST(LegCompletionTest, AWallThroughTheCornerIsNoLeg) {
+  // Instead of the lone leg, a wall through its corner, facing the sensor, seen on the beams
+  // outside the box (the leg's own and 10 more): the returns within reach of the corner are a
+  // piece of a surface.
+  auto points = Scene(BesideTheLoneReturn::kDropout);
+  const Eigen::Vector2d corner = TrueShelfPose() * Shelf().LegCentres()[kLoneLeg];
+  const double bearing = std::atan2(corner.y(), corner.x());
+  const Eigen::Vector2d normal(std::cos(bearing), std::sin(bearing));
+  const int lone_beam = [&] {
+    for (const ScanPoint& q : points) {
+      if ((q.p - corner).norm() < 0.05) return q.beam;
+    }
+    return -1;
+  }();
+  ASSERT_GE(lone_beam, 0);
+  for (ScanPoint& q : points) {
+    if (q.beam < lone_beam - 10 || q.beam > lone_beam) continue;
+    const Eigen::Vector2d u(std::cos(q.angle), std::sin(q.angle));
+    q = BeamPoint(q.beam, corner.dot(normal) / u.dot(normal));
+  }
+  EXPECT_TRUE(Complete(points, TrueShelfPose()).sets.empty());
+}
+
+TEST(LegCompletionTest, OutsideTheCompletionGateNothingIsCompleted) {
+  const geometry::Pose2 truth = TrueShelfPose();
+  DetectorConfig config;
+  // 0.3 m off: inside the preset gate (0.5 m), outside the completion's (0.25 m).
+  const geometry::Pose2 preset(truth.x + 0.3, truth.y, truth.yaw);
+  EXPECT_TRUE(Complete(Scene(BesideTheLoneReturn::kDropout), preset, config).sets.empty());
+  // 0.2 rad turned: inside the gate's 0.35 rad, outside the completion's 0.15 rad.
+  const geometry::Pose2 turned(truth.x, truth.y, truth.yaw + 0.2);
+  EXPECT_TRUE(Complete(Scene(BesideTheLoneReturn::kDropout), turned, config).sets.empty());
+}
+
+}  // namespace
+}  // namespace shelfdock::perception
