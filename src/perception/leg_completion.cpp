@@ -70,20 +70,20 @@ bool ContinuesPastCut(const std::vector<ScanPoint>& points, const Cluster& c, do
   return false;
 }
 
-// True when the cut is a single return whose range lies between those of its two beam
-// neighbours, a depth step from each: what a mixed point looks like (the beam's footprint
-// straddling a nearer object's edge and the background, Eq. 1's trailing point). A leg seen by
-// one return beside an occluder looks the same, so such a return cannot vouch for a corner; a
-// lone return beside a dropout, or nearer than both neighbours, is no mixed point of them.
+// True when the cut is a single return with a nearer return on the next beam, a depth step
+// in front: what a mixed point looks like (the beam's footprint straddling that nearer
+// object's edge and whatever lies behind, Eq. 1's trailing point; the background part may be
+// too weak to return at all). A leg seen by one return beside an occluder looks the same, so
+// such a return cannot vouch for a corner; a lone return beside a dropout or with farther
+// returns beside it is no mixed point of a nearer object.
 bool MayBeMixedPoint(const std::vector<ScanPoint>& points, const Cluster& c, double step_m) {
   if (c.points.size() != 1) return false;
   const ScanPoint& q = c.points.front();
-  const ScanPoint* before = FindBeam(points, q.beam - 1);
-  const ScanPoint* after = FindBeam(points, q.beam + 1);
-  if (before == nullptr || after == nullptr) return false;
-  const double near = std::min(before->range, after->range);
-  const double far = std::max(before->range, after->range);
-  return q.range > near + step_m && q.range < far - step_m;
+  for (int dir : {-1, 1}) {
+    const ScanPoint* next = FindBeam(points, q.beam + dir);
+    if (next != nullptr && next->range < q.range - step_m) return true;
+  }
+  return false;
 }
 
 // What tells a leg from part of something else, from the scan's returns around a cut.
