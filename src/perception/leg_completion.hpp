@@ -23,14 +23,17 @@ struct CompletedLegSets {
 /// Two candidates a model's side or diagonal apart fix the shelf up to which side of them it
 /// stands on; the preset tells which. Where that shelf has its other legs, the scan's returns
 /// within half the leg's extent plus corner_margin_m of the corner are cut out as a leg, from
-/// `scan_points` (every valid return, before the trailing filter: a lone return between a
-/// dropout and the background is taken for a mixed point there). Used when the search of paper
-/// 3.2 found nothing near the preset because a leg in sight never became a candidate: seen
-/// by one return beside an occluder, or merged with a person's leg. Only shelves within the
-/// completion's own preset gate (max_offset_m, max_yaw_offset_rad) are completed; the sets then go
-/// through the same fit, model screening and evidence as any other. `centres` are the candidates'
-/// search centres (detector.cpp), `split_step_m` the depth step that marks an outline's edge
-/// (FindSilhouetteEdges).
+/// `scan_points` (every valid return, before the trailing filter: a lone return beside a dropout
+/// and an occluder is taken for a mixed point there). Used when the search of paper 3.2 found
+/// nothing near the preset because a leg in sight never became a candidate: seen by one return
+/// beside an occluder, or merged with a person's leg. A cut is no leg when its returns already
+/// were a candidate, when the object goes on past it or it lies on a surface with its beam
+/// neighbours, or when it is a single return beside a nearer one (a mixed point may look so).
+/// Only shelves within the completion's own preset gate (max_offset_m, max_yaw_offset_rad) are
+/// completed; the sets then go through the same fit, model screening and evidence as any other
+/// (the detector holds a completed 3-leg set to the no-preset err_sum bound). `centres` are the
+/// candidates' search centres (detector.cpp); `preprocess` gives the depth step, the surface
+/// rule's parameters and the widest leg cluster.
 CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                                  const PreprocessOutput& pre,
                                  const std::vector<Eigen::Vector2d>& centres,

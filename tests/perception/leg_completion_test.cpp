@@ -54,7 +54,8 @@ std::pair<int, int> LegBeams(const std::array<std::optional<double>, kBeams>& le
   return {first, last};
 }
 
-std::vector<ScanPoint> Scene(BesideTheLoneReturn beside) {
+// `lone_shift_m` moves the lone return that far along its beam (away from the sensor).
+std::vector<ScanPoint> Scene(BesideTheLoneReturn beside, double lone_shift_m = 0.0) {
   const geometry::Pose2 T = TrueShelfPose();
   const auto corners = Shelf().LegCentres();
   std::array<std::optional<double>, kBeams> range{};
@@ -78,6 +79,7 @@ std::vector<ScanPoint> Scene(BesideTheLoneReturn beside) {
   const int box_begin = beside == BesideTheLoneReturn::kDropout ? first + 2 : first + 1;
   if (beside == BesideTheLoneReturn::kDropout) dropout[first + 1] = true;
   for (int b = box_begin; b <= last + 25; ++b) range[b] = kOccluder_m;
+  *range[first] += lone_shift_m;
 
   std::vector<ScanPoint> points;
   for (int b = 0; b < kBeams; ++b) {
@@ -144,6 +146,30 @@ TEST(LegCompletionTest, TheDetectorReturnsTheCompletedShelfAtItsTruePose) {
   // Noise free, one leg by a single return: within 1 cm and 10 mrad of the truth.
   EXPECT_LT((d.T_lidar_shelf.translation() - truth.translation()).norm(), 0.01);
   EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, truth.yaw, false), 0.01);
+}
+
+TEST(LegCompletionTest, ACompletedShelfMatchesTheModelAsTightlyAsWithoutAPreset) {
+  // The lone return 2 cm and 5 cm beyond the leg's face: the set's err_sum grows with it. The
+  // preset vouched for the completed set already, so it gets the no-preset bound (0.04 m), not
+  // the preset's (0.06 m).
+  const Detector detector(PaperModels());
+  const DetectorConfig config;
+  const DetectionResult near =
+      detector.DetectPoints(Scene(BesideTheLoneReturn::kDropout, 0.02), kWlrAlpha, TrueShelfPose(),
+                            /*explain=*/true);
+  ASSERT_EQ(near.detections.size(), 1u);
+  EXPECT_LT(near.detections.front().err_sum, config.model_match.three_leg_err_sum_m);
+  const DetectionResult far =
+      detector.DetectPoints(Scene(BesideTheLoneReturn::kDropout, 0.05), kWlrAlpha, TrueShelfPose(),
+                            /*explain=*/true);
+  EXPECT_TRUE(far.detections.empty());
+  bool between_bounds = false;
+  for (const HypothesisRecord& h : far.hypotheses) {
+    between_bounds |= h.verdict == Verdict::kThreeLegError &&
+                      h.err_sum > config.model_match.three_leg_err_sum_m &&
+                      h.err_sum < config.model_match.three_leg_err_sum_preset_m;
+  }
+  EXPECT_TRUE(between_bounds) << "a completed set with err_sum between the two bounds";
 }
 
 TEST(LegCompletionTest, WithoutAPresetNothingIsCompleted) {
