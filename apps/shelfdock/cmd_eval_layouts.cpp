@@ -116,6 +116,14 @@ int RunEvalLayouts(const EvalLayoutsOptions& opt) {
        io::LayoutTableLines(rows, config, layout.noise_sigma_m, layout.high_noise_sigma_m, "")) {
     std::cout << line << "\n";
   }
+  // With more than one sensor, the same by sensor (every class together): which one the misses
+  // come from.
+  const auto lidar_rows = eval::SummariseLayoutsByLidar(results, config);
+  if (lidar_rows.size() > 1) {
+    const auto lines = io::LayoutTableLines(lidar_rows, config, layout.noise_sigma_m,
+                                            layout.high_noise_sigma_m, "", "lidar");
+    for (std::size_t i = 0; i < lidar_rows.size() + 1; ++i) std::cout << lines[i] << "\n";
+  }
   std::cout << results.size() << " scenes in " << std::fixed << std::setprecision(1) << seconds
             << " s\n";
   int failures = 0;
@@ -128,7 +136,7 @@ int RunEvalLayouts(const EvalLayoutsOptions& opt) {
   if (!opt.json.empty()) {
     std::ofstream out(opt.json);
     if (!out) throw io::InputError(opt.json, "", "cannot write file");
-    out << io::LayoutSweepJson(rows, results, config).dump(1) << "\n";
+    out << io::LayoutSweepJson(rows, results, config, lidar_rows).dump(1) << "\n";
   }
   if (!opt.dump_failures.empty()) DumpFailures(opt, models, layout, results);
   return kExitOk;

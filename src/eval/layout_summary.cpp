@@ -1,5 +1,7 @@
 #include "eval/layout_summary.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <map>
 
@@ -106,6 +108,25 @@ std::vector<LayoutSummary> SummariseLayoutsByClass(const std::vector<LayoutScene
     }
   }
   rows.push_back(SummariseLayouts(scenes, "overall", config));
+  return rows;
+}
+
+std::vector<LayoutSummary> SummariseLayoutsByLidar(const std::vector<LayoutSceneResult>& scenes,
+                                                   const LayoutSweepConfig& config) {
+  std::vector<std::string> names;
+  for (const LayoutSceneResult& r : scenes) {
+    if (std::find(names.begin(), names.end(), r.lidar_name) == names.end()) {
+      names.push_back(r.lidar_name);
+    }
+  }
+  std::vector<LayoutSummary> rows;
+  for (const std::string& name : names) {
+    std::vector<LayoutSceneResult> of_lidar;
+    for (const LayoutSceneResult& r : scenes) {
+      if (r.lidar_name == name) of_lidar.push_back(r);
+    }
+    rows.push_back(SummariseLayouts(of_lidar, name, config));
+  }
   return rows;
 }
 

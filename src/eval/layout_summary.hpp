@@ -55,4 +55,9 @@ LayoutSummary SummariseLayouts(const std::vector<LayoutSceneResult>& scenes,
 std::vector<LayoutSummary> SummariseLayoutsByClass(const std::vector<LayoutSceneResult>& scenes,
                                                    const LayoutSweepConfig& config);
 
+/// One row per LiDAR (named as in LayoutSceneResult::lidar_name, in order of first appearance),
+/// every class together: which sensor the misses come from.
+std::vector<LayoutSummary> SummariseLayoutsByLidar(const std::vector<LayoutSceneResult>& scenes,
+                                                   const LayoutSweepConfig& config);
+
 }  // namespace shelfdock::eval

@@ -135,15 +135,16 @@ std::string PresetArgument(const geometry::Pose2& T) {
 std::vector<std::string> LayoutTableLines(const std::vector<eval::LayoutSummary>& rows,
                                           const eval::LayoutSweepConfig& config,
                                           double low_noise_sigma_m, double high_noise_sigma_m,
-                                          const std::string& prefix) {
+                                          const std::string& prefix,
+                                          const std::string& first_column) {
   const double low_mm = 1e3 * low_noise_sigma_m, high_mm = 1e3 * high_noise_sigma_m;
   std::vector<std::string> lines;
   lines.push_back(prefix +
                   Format("%-17s %6s %6s %6s %8s %6s %6s %6s %6s %6s %6s | %3.0fmm: %5s %11s "
                          "%11s | %3.0fmm: %5s %11s %11s | %9s",
-                         "class", "scenes", "find", "right", "right%", "missed", "wrong", "nofind",
-                         "nf-wr", "phant", "clutd", low_mm, "n", "ctr mm", "hdg mrad", high_mm, "n",
-                         "ctr mm", "hdg mrad", "|dL|/|dW|"));
+                         first_column.c_str(), "scenes", "find", "right", "right%", "missed",
+                         "wrong", "nofind", "nf-wr", "phant", "clutd", low_mm, "n", "ctr mm",
+                         "hdg mrad", high_mm, "n", "ctr mm", "hdg mrad", "|dL|/|dW|"));
   for (const auto& r : rows) {
     lines.push_back(prefix + RowLine(r, low_noise_sigma_m, high_noise_sigma_m));
   }
@@ -191,7 +192,8 @@ std::string LayoutFailureLine(const eval::LayoutSceneResult& r) {
 
 nlohmann::json LayoutSweepJson(const std::vector<eval::LayoutSummary>& rows,
                                const std::vector<eval::LayoutSceneResult>& scenes,
-                               const eval::LayoutSweepConfig& config) {
+                               const eval::LayoutSweepConfig& config,
+                               const std::vector<eval::LayoutSummary>& lidar_rows) {
   nlohmann::json table = nlohmann::json::array();
   for (const auto& r : rows) table.push_back(SummaryJson(r));
   nlohmann::json failures = nlohmann::json::array();
@@ -200,15 +202,21 @@ nlohmann::json LayoutSweepJson(const std::vector<eval::LayoutSummary>& rows,
     all.push_back(SceneJson(s));
     if (s.Failed()) failures.push_back(all.back());
   }
-  return {{"scenes_per_class", config.scenes_per_class},
-          {"seed0", config.seed0},
-          {"right_radius_m", config.right_radius_m},
-          {"phantom_radius_m", config.phantom_radius_m},
-          {"min_legs_in_sight", config.min_legs_in_sight},
-          {"accuracy_max_standoff_m", config.accuracy_max_standoff_m},
-          {"rows", table},
-          {"failures", failures},
-          {"scenes", all}};
+  nlohmann::json out = {{"scenes_per_class", config.scenes_per_class},
+                        {"seed0", config.seed0},
+                        {"right_radius_m", config.right_radius_m},
+                        {"phantom_radius_m", config.phantom_radius_m},
+                        {"min_legs_in_sight", config.min_legs_in_sight},
+                        {"accuracy_max_standoff_m", config.accuracy_max_standoff_m},
+                        {"rows", table},
+                        {"failures", failures},
+                        {"scenes", all}};
+  if (!lidar_rows.empty()) {
+    nlohmann::json by_lidar = nlohmann::json::array();
+    for (const auto& r : lidar_rows) by_lidar.push_back(SummaryJson(r));
+    out["rows_by_lidar"] = by_lidar;
+  }
+  return out;
 }
 
 std::string WriteLayoutFailure(const std::string& dir, const sim::LayoutScene& scene,

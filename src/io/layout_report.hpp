@@ -27,19 +27,22 @@ namespace shelfdock::io {
 
 /// The table: a header, one line per summary row and a legend, each line starting with
 /// `prefix`. Accuracy columns for the two noise levels given (p50/p95 of the right-first
-/// findable scenes within the sweep's standoff limit).
+/// findable scenes within the sweep's standoff limit). `first_column` heads the rows' names.
 std::vector<std::string> LayoutTableLines(const std::vector<eval::LayoutSummary>& rows,
                                           const eval::LayoutSweepConfig& config,
                                           double low_noise_sigma_m, double high_noise_sigma_m,
-                                          const std::string& prefix);
+                                          const std::string& prefix,
+                                          const std::string& first_column = "class");
 
 /// One line for a failing scene: class, seed, sensor, what happened, truth and first detection.
 std::string LayoutFailureLine(const eval::LayoutSceneResult& result);
 
-/// The sweep: {"scenes_per_class", "seed0", "rows": [per class ..., overall], "failures": [...]}.
+/// The sweep: {"scenes_per_class", "seed0", "rows": [per class ..., overall], "failures": [...]},
+/// and "rows_by_lidar" when `lidar_rows` is not empty.
 nlohmann::json LayoutSweepJson(const std::vector<eval::LayoutSummary>& rows,
                                const std::vector<eval::LayoutSceneResult>& scenes,
-                               const eval::LayoutSweepConfig& config);
+                               const eval::LayoutSweepConfig& config,
+                               const std::vector<eval::LayoutSummary>& lidar_rows = {});
 
 /// Writes `scene`'s scan and truth files into `dir` (created if missing) as described above;
 /// `detect_args` is appended to the reproducing command (e.g. "--models config/models.yaml").

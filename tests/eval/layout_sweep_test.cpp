@@ -118,6 +118,22 @@ TEST(LayoutSweepTest, EveryClassIsGeneratedAndScored) {
       EXPECT_EQ(row.right_first + row.missed + row.wrong_first, row.findable);
     }
   }
+  // By sensor: one row per preset, adding up to the overall row.
+  const auto by_lidar = SummariseLayoutsByLidar(results, config);
+  ASSERT_EQ(by_lidar.size(), layout.lidars.size());
+  int scenes = 0, findable = 0, right_first = 0, phantoms = 0;
+  for (const LayoutSummary& row : by_lidar) {
+    EXPECT_GT(row.scenes, 0) << row.name;
+    scenes += row.scenes;
+    findable += row.findable;
+    right_first += row.right_first;
+    phantoms += row.phantoms;
+  }
+  const LayoutSummary& overall = rows.back();
+  EXPECT_EQ(scenes, overall.scenes);
+  EXPECT_EQ(findable, overall.findable);
+  EXPECT_EQ(right_first, overall.right_first);
+  EXPECT_EQ(phantoms, overall.phantoms);
 }
 
 }  // namespace
