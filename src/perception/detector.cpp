@@ -312,11 +312,11 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   // smallest leg's half depth (no model is known yet), the fits then find the true centres.
   double half_depth = std::numeric_limits<double>::infinity();
   for (const auto& m : models_) half_depth = std::min(half_depth, 0.5 * m.leg.width_m);
-  for (const auto& c : pre.candidates) {
+  auto search_centre = [half_depth](const Cluster& c) -> Eigen::Vector2d {
     const double r = c.centroid.norm();
-    centres.push_back(r > half_depth ? Eigen::Vector2d(c.centroid * (1.0 + half_depth / r))
-                                     : c.centroid);
-  }
+    return r > half_depth ? Eigen::Vector2d(c.centroid * (1.0 + half_depth / r)) : c.centroid;
+  };
+  for (const auto& c : pre.candidates) centres.push_back(search_centre(c));
 
   // 3.2 geometric search.
   const std::vector<LegSet> sets = SearchLegSets(centres, models_, config_.leg_search);
@@ -474,9 +474,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
         CompleteLegSets(points, pre, centres, models_, *T_lidar_preset, config_.completion,
                         config_.leg_search, config_.preprocess);
     for (const Cluster& c : completed.legs) {
-      const double r = c.centroid.norm();
-      centres.push_back(r > half_depth ? Eigen::Vector2d(c.centroid * (1.0 + half_depth / r))
-                                       : c.centroid);
+      centres.push_back(search_centre(c));
       pre.candidates.push_back(c);
     }
     stats.completed_sets = static_cast<int>(completed.sets.size());
