@@ -75,8 +75,9 @@ struct LegFitConfig {
                                         ///< centre (both edges known to a beam: 0.2, plus margin)
   int pca_min_points = 6;               ///< [-] fewer points: leg axes from the shelf edge
   int one_edge_max_points = 5;          ///< [-] a leg whose outline shows one edge is placed by
-                                        ///< that edge when it has at most this many returns;
-                                        ///< with more, between its outer beams (its faces)
+                                        ///< that edge when it has at most this many returns, or
+                                        ///< its other side is cut (an occluder, the field of
+                                        ///< view's end); else between its outer beams
   double pca_min_anisotropy = 20;       ///< [-] eigenvalue ratio for a PCA direction to be trusted
   int max_iterations = 20;              ///< [-] solver iterations
 };

@@ -16,6 +16,12 @@ struct SilhouetteEdges {
   /// may go on there, so its outline says nothing on that side.
   std::optional<double> before_rad;
   std::optional<double> after_rad;
+  /// An open side where the object may go on well past its outer return: the next beam out
+  /// returned from something nearer (an occluder), or there is no next beam (the field of view
+  /// ends there). A dropout beside it leaves the side open but not cut: a dark leg at a grazing
+  /// angle drops a beam or so.
+  bool before_cut = false;
+  bool after_cut = false;
 };
 
 /// The edges of the object whose returns run from `first` to `last` (beam order), read from

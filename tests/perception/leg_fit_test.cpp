@@ -256,6 +256,30 @@ TEST(LegFitTest, ASingleReturnBesideASeenEdgeIsPlacedByThatEdge) {
   }
 }
 
+// The sensor beside or under a large shelf: the field of view ends in the middle of the nearest
+// leg, which still shows 6 or more returns. The side where the scan ends is cut (the leg may go
+// on for centimetres there), so the edge seen on the other side and the leg's section place it:
+// within 0.5 steps RMS across the beam (measured 0.29-0.30); between the outer beams it is off
+// by two steps or more (2.1-3.8). 0.35-0.4 m away.
+TEST(LegFitTest, ALegCutByTheEndOfTheFieldOfViewIsPlacedByItsOtherEdge) {
+  for (const auto& leg : {Round26(), Square40()}) {
+    const CutLegErrors e = CutLegAcrossErrors(
+        "cut by the field of view", leg, 0.35, 0.05, 5,
+        [](std::vector<ScanPoint>& pts, SilhouetteEdges& edges) {
+          // The whole leg inside the fan with 10 returns or more; the scan then starts 40 %
+          // of the way across it, leaving 6 or more.
+          if (pts.size() < 10 || pts.front().beam <= 40 || pts.back().beam >= 63) return false;
+          pts.erase(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(2 * pts.size() / 5));
+          edges.after_rad = pts.back().angle + 0.5 * kAlpha;
+          edges.before_cut = true;  // no beam before the first point
+          return true;
+        });
+    ASSERT_GT(e.draws, 50);
+    EXPECT_LT(e.with_edge_steps, 0.5);
+    EXPECT_GT(e.blind_steps, e.with_edge_steps + 1.0);
+  }
+}
+
 TEST(LegFitTest, OnePointAndNoPoint) {
   const LegFitConfig config;
   EXPECT_FALSE(FitLeg({}, Square40(), 0.0, config).converged);

@@ -53,6 +53,27 @@ TEST(SilhouetteEdgesTest, SomethingNearerOrJustBehindLeavesThatSideOpen) {
   EXPECT_FALSE(FindSilhouetteEdges(close, close[3], close[6], kMinDepth).after_rad);
 }
 
+TEST(SilhouetteEdgesTest, AnOccluderOrTheScansEndCutsASideADropoutDoesNot) {
+  const auto nearer = Scan(0.6);
+  const SilhouetteEdges occluded = FindSilhouetteEdges(nearer, nearer[3], nearer[6], kMinDepth);
+  EXPECT_TRUE(occluded.after_cut);
+  EXPECT_FALSE(occluded.before_cut);  // the wall beyond: an edge seen
+  const auto dropout = Scan(std::nullopt);
+  const SilhouetteEdges dropped = FindSilhouetteEdges(dropout, dropout[3], dropout[6], kMinDepth);
+  EXPECT_FALSE(dropped.after_rad);
+  EXPECT_FALSE(dropped.after_cut);
+  // The leg on the scan's first beams: nothing before beam 0.
+  std::vector<ScanPoint> points;
+  for (int b = 0; b <= 3; ++b) points.push_back(BeamPoint(b, 1.0));
+  points.push_back(BeamPoint(4, 3.0));
+  const SilhouetteEdges at_start = FindSilhouetteEdges(points, points[0], points[3], kMinDepth);
+  EXPECT_TRUE(at_start.before_cut);
+  EXPECT_FALSE(at_start.after_cut);
+  // ... and on its last return: nothing after it either.
+  const SilhouetteEdges at_end = FindSilhouetteEdges(points, points[4], points[4], kMinDepth);
+  EXPECT_TRUE(at_end.after_cut);
+}
+
 TEST(SilhouetteEdgesTest, TheScanEndsLeaveTheSidesOpenAndReversedOrderSwapsThem) {
   std::vector<ScanPoint> points;
   for (int b = 0; b <= 3; ++b) points.push_back(BeamPoint(b, 1.0));
