@@ -30,19 +30,6 @@ Cluster CutLeg(const std::vector<ScanPoint>& points, const std::vector<int>& nea
   return c;
 }
 
-// The index of the first return of beam `beam` or later (points in beam order).
-std::size_t IndexOfBeam(const std::vector<ScanPoint>& points, int beam) {
-  const auto it = std::lower_bound(points.begin(), points.end(), beam,
-                                   [](const ScanPoint& q, int b) { return q.beam < b; });
-  return static_cast<std::size_t>(it - points.begin());
-}
-
-// The return of beam `beam`, if it is valid.
-const ScanPoint* FindBeam(const std::vector<ScanPoint>& points, int beam) {
-  const std::size_t i = IndexOfBeam(points, beam);
-  return i < points.size() && points[i].beam == beam ? &points[i] : nullptr;
-}
-
 // True when the object the cut belongs to goes on past it: the next beam out on either side
 // returned from within `step_m` of the cut's outer return. A leg is a small object: its
 // outline ends at a farther return (the background), a nearer one (an occluder) or none; a
@@ -108,7 +95,7 @@ bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const S
   return !ContinuesSurface(points, begin, end, s.max_step_m, s.min_chord_m, s.tolerance_m);
 }
 
-// True when the shelf at `T` stands where the preset gate lets a detection through.
+// True when the shelf at `T` stands within the completion's own preset gate.
 bool PassesGate(const geometry::Pose2& T, const geometry::ShelfModel& model,
                 const geometry::Pose2& preset, const LegCompletionConfig& gate) {
   if ((T.translation() - preset.translation()).norm() > gate.max_offset_m) return false;

@@ -7,13 +7,6 @@
 namespace shelfdock::perception {
 namespace {
 
-// The return of beam `beam`, if it is valid (scan_points is in beam order).
-const ScanPoint* FindBeam(const std::vector<ScanPoint>& scan_points, int beam) {
-  const auto it = std::lower_bound(scan_points.begin(), scan_points.end(), beam,
-                                   [](const ScanPoint& q, int b) { return q.beam < b; });
-  return it != scan_points.end() && it->beam == beam ? &*it : nullptr;
-}
-
 // The edge between `outer` and the next beam out (`step` beams away), when that beam passed
 // beside the object. `cut` tells whether an open side may hide much more of the object: the
 // next beam returned from nearer, or the scan has no beam there (before its first beam or after
