@@ -15,9 +15,8 @@ namespace {
 /// Smallest heading difference modulo the model's symmetry (pi, or pi/2 for square models):
 /// the detector cannot tell the ends of a shelf apart and is not asked to.
 double SymmetricHeadingError(double yaw_rad, double truth_rad, bool square) {
-  const double step = square ? 0.5 * std::numbers::pi : std::numbers::pi;
-  const double d = geometry::AngleDiff(yaw_rad, truth_rad);
-  return std::abs(d - step * std::round(d / step));
+  return geometry::AngleDiffModulo(yaw_rad, truth_rad,
+                                   square ? 0.5 * std::numbers::pi : std::numbers::pi);
 }
 
 /// The true shelf nearest to a detected centre (id, distance); (-1, inf) without shelves.

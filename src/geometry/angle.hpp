@@ -16,6 +16,13 @@ inline double WrapAngle(double angle_rad) {
 /// Signed smallest difference a - b, in [-pi, pi).
 inline double AngleDiff(double a_rad, double b_rad) { return WrapAngle(a_rad - b_rad); }
 
+/// |a - b| modulo `period_rad`: the smallest difference between two headings of something that
+/// looks the same turned by period_rad (pi for a rectangular shelf, pi/2 for a square one).
+inline double AngleDiffModulo(double a_rad, double b_rad, double period_rad) {
+  const double d = AngleDiff(a_rad, b_rad);
+  return std::abs(d - period_rad * std::round(d / period_rad));
+}
+
 /// Degrees to radians and back.
 inline constexpr double DegToRad(double deg) { return deg * std::numbers::pi / 180.0; }
 inline constexpr double RadToDeg(double rad) { return rad * 180.0 / std::numbers::pi; }

@@ -100,9 +100,7 @@ bool PassesGate(const geometry::Pose2& T, const geometry::ShelfModel& model,
                 const geometry::Pose2& preset, const LegCompletionConfig& gate) {
   if ((T.translation() - preset.translation()).norm() > gate.max_offset_m) return false;
   const double period = model.IsSquare() ? 0.5 * std::numbers::pi : std::numbers::pi;
-  const double d = geometry::AngleDiff(T.yaw, preset.yaw);
-  const double off = std::abs(d - period * std::round(d / period));
-  return off <= gate.max_yaw_offset_rad;
+  return geometry::AngleDiffModulo(T.yaw, preset.yaw, period) <= gate.max_yaw_offset_rad;
 }
 
 }  // namespace
@@ -120,8 +118,7 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
   const int base = static_cast<int>(pre.candidates.size());
   const Surroundings look{SplitStep(preprocess, pre.range_noise_m), preprocess.surface_max_step_m,
                           MaxLegExtent(models, preprocess, pre.range_noise_m),
-                          std::max(preprocess.surface_tolerance_m,
-                                   preprocess.surface_noise_sigmas * pre.range_noise_m)};
+                          SurfaceTolerance(preprocess, pre.range_noise_m)};
 
   // Only returns near the preset can stand at a completed corner.
   double reach = 0.0;

@@ -129,6 +129,10 @@ double SplitStep(const PreprocessConfig& config, double range_noise_m) {
                   config.split_noise_steps * std::sqrt(2.0) * range_noise_m);
 }
 
+double SurfaceTolerance(const PreprocessConfig& config, double range_noise_m) {
+  return std::max(config.surface_tolerance_m, config.surface_noise_sigmas * range_noise_m);
+}
+
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
                  double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
                  const PreprocessConfig& config, double max_extent_m) {
@@ -168,8 +172,7 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   out.range_noise_m = EstimateRangeNoise(out.points, out.spans).sigma_m;
   const double max_leg_extent = MaxLegExtent(models, config, out.range_noise_m);
   const double split_step = SplitStep(config, out.range_noise_m);
-  const double surface_tolerance =
-      std::max(config.surface_tolerance_m, config.surface_noise_sigmas * out.range_noise_m);
+  const double surface_tolerance = SurfaceTolerance(config, out.range_noise_m);
   // `piece` (a span or part of span si) as a candidate, when it has min_points and fits a leg.
   auto add_candidate = [&](const ClusterSpan& piece, int si, std::size_t min_points) {
     if (piece.size() < min_points ||

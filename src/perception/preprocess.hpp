@@ -80,6 +80,11 @@ double MaxLegExtent(const std::vector<geometry::ShelfModel>& models, const Prepr
 /// difference of two ranges (sqrt 2 * range_noise_m) when that is more.
 double SplitStep(const PreprocessConfig& config, double range_noise_m);
 
+/// How close to the line through its beam neighbours a piece lies when it continues their
+/// surface (ContinuesSurface): surface_tolerance_m, or surface_noise_sigmas * range_noise_m
+/// when that is more.
+double SurfaceTolerance(const PreprocessConfig& config, double range_noise_m);
+
 /// True when a cluster's extent is at most max_extent_m (MaxLegExtent of the scan) and its point
 /// count fits a leg of some model at its range.
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,

@@ -46,9 +46,7 @@ inline geometry::LaserScan SimScan(const sim::World& world, const geometry::Pose
 
 /// Smallest heading error modulo the model's symmetry (pi, or pi/2 for squares).
 inline double SymmetricYawError(double yaw, double truth, bool square) {
-  const double step = square ? 0.5 * M_PI : M_PI;
-  const double d = geometry::AngleDiff(yaw, truth);
-  return std::abs(d - step * std::round(d / step));
+  return geometry::AngleDiffModulo(yaw, truth, square ? 0.5 * M_PI : M_PI);
 }
 
 /// Exact points of a ray fan (sensor at the origin) on a circle or an oriented box: the first
