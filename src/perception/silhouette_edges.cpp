@@ -15,11 +15,13 @@ std::optional<double> EdgeBeside(const std::vector<ScanPoint>& scan_points, cons
                                  int step, double min_depth_m, bool& cut) {
   const int beam = outer.beam + step;
   const ScanPoint* next = FindBeam(scan_points, beam);
+  if (next != nullptr && next->range >= outer.range + min_depth_m) {
+    cut = false;
+    return geometry::WrapAngle(outer.angle + 0.5 * geometry::AngleDiff(next->angle, outer.angle));
+  }
   cut = next == nullptr ? beam < 0 || scan_points.empty() || beam > scan_points.back().beam
                         : next->range < outer.range;
-  if (next == nullptr || next->range < outer.range + min_depth_m) return std::nullopt;
-  cut = false;
-  return geometry::WrapAngle(outer.angle + 0.5 * geometry::AngleDiff(next->angle, outer.angle));
+  return std::nullopt;
 }
 
 }  // namespace
