@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace shelfdock::geometry {
 
@@ -13,6 +14,10 @@ double ShelfModel::Diagonal() const { return std::hypot(length_m, width_m); }
 
 bool ShelfModel::IsSquare(double tolerance_m) const {
   return std::abs(length_m - width_m) <= tolerance_m;
+}
+
+double ShelfModel::HeadingPeriod() const {
+  return IsSquare() ? 0.5 * std::numbers::pi : std::numbers::pi;
 }
 
 std::array<Eigen::Vector2d, 4> ShelfModel::LegCentres() const {

@@ -35,6 +35,9 @@ struct ShelfModel {
 
   double Diagonal() const;
   bool IsSquare(double tolerance_m = 1e-3) const;
+  /// [rad] The turn that maps the shelf's legs onto themselves: pi, or pi/2 for a square one.
+  /// A detector cannot tell headings this far apart; compare headings modulo it.
+  double HeadingPeriod() const;
   /// Leg centres in the shelf frame, counter-clockwise from (-L/2, -W/2).
   std::array<Eigen::Vector2d, 4> LegCentres() const;
 };

@@ -94,14 +94,14 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
 void ReadPresetGate(YamlFields f, perception::PresetGateConfig& c) {
   f.Read("max_offset_m", c.max_offset_m);
   f.Read("max_yaw_offset_rad", c.max_yaw_offset_rad);
+  f.Read("map_error_m", c.map_error_m);
+  f.Read("map_error_yaw_rad", c.map_error_yaw_rad);
   f.RejectUnknown();
 }
 
 void ReadCompletion(YamlFields f, perception::LegCompletionConfig& c) {
   f.Read("enabled", c.enabled);
   f.Read("corner_margin_m", c.corner_margin_m);
-  f.Read("max_offset_m", c.max_offset_m);
-  f.Read("max_yaw_offset_rad", c.max_yaw_offset_rad);
   f.RejectUnknown();
 }
 

@@ -85,9 +85,13 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   const auto& g = c.preset_gate;
   k.Check(g.max_offset_m >= 0.0, "preset_gate.max_offset_m", ">= 0 (0: off)");
   k.Check(g.max_yaw_offset_rad >= 0.0, "preset_gate.max_yaw_offset_rad", ">= 0 (0: off)");
+  k.Check(g.map_error_m > 0.0, "preset_gate.map_error_m", "> 0");
+  k.Check(g.map_error_yaw_rad > 0.0, "preset_gate.map_error_yaw_rad", "> 0");
+  k.Check(g.max_offset_m <= 0.0 || g.map_error_m <= g.max_offset_m, "preset_gate.map_error_m",
+          "<= preset_gate.max_offset_m (the map's error lies inside the gate)");
+  k.Check(g.max_yaw_offset_rad <= 0.0 || g.map_error_yaw_rad <= g.max_yaw_offset_rad,
+          "preset_gate.map_error_yaw_rad", "<= preset_gate.max_yaw_offset_rad");
   k.Check(c.completion.corner_margin_m >= 0.0, "completion.corner_margin_m", ">= 0");
-  k.Check(c.completion.max_offset_m > 0.0, "completion.max_offset_m", "> 0");
-  k.Check(c.completion.max_yaw_offset_rad > 0.0, "completion.max_yaw_offset_rad", "> 0");
   return k.Result();
 }
 

@@ -139,6 +139,12 @@ struct PresetGateConfig {
   double max_offset_m = 0.5;         ///< [m] centre distance from the preset; 0 turns the gate off
   double max_yaw_offset_rad = 0.35;  ///< [rad] heading difference modulo the shelf's symmetry
                                      ///< (pi, or pi/2 for a square one); 0 turns it off
+  /// [m] The map's own error: the preset vouches for a shelf only this close to it (a 3-leg set
+  /// whose fourth leg is hidden, the looser 3-leg err_sum bound, completing a shelf from two
+  /// legs). Farther out, up to max_offset_m (a shelf pushed about), the scan alone must vouch
+  /// for it, as without a preset. The layouts' presets are off by up to 0.2 m and 0.1 rad.
+  double map_error_m = 0.25;
+  double map_error_yaw_rad = 0.15;  ///< [rad] the same for the heading (modulo symmetry)
 };
 
 /// Completing a shelf from two leg candidates when the search of paper 3.2 found nothing near
@@ -146,14 +152,13 @@ struct PresetGateConfig {
 /// return beside an occluder or taken for a mixed point, a leg merged with a person's) is cut
 /// from the scan at the corner the two legs and the preset predict.
 /// A completed shelf leans on the map more than one the search found whole, so it must stand
-/// where the map says within the map's own error (the layouts' presets: up to 0.2 m, 0.1 rad),
-/// not merely inside the preset gate, which also allows for shelves pushed about.
+/// where the map says within the map's own error (PresetGateConfig::map_error_m and
+/// map_error_yaw_rad), not merely inside the preset gate, which also allows for shelves pushed
+/// about.
 struct LegCompletionConfig {
-  bool enabled = true;               ///< with a preset and nothing found near it, complete pairs
-  double corner_margin_m = 0.03;     ///< [m] returns within half the leg's extent plus this of a
-                                     ///< predicted corner are its leg
-  double max_offset_m = 0.25;        ///< [m] a completed shelf's centre distance from the preset
-  double max_yaw_offset_rad = 0.15;  ///< [rad] its heading difference (modulo symmetry)
+  bool enabled = true;            ///< with a preset and nothing found near it, complete pairs
+  double corner_margin_m = 0.03;  ///< [m] returns within half the leg's extent plus this of a
+                                  ///< predicted corner are its leg
 };
 
 /// All detector parameters, one struct per stage (config/detector.yaml).

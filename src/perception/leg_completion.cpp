@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <set>
 
 #include "geometry/angle.hpp"
+#include "perception/preset_gate.hpp"
 #include "perception/silhouette_edges.hpp"
 #include "perception/surface_continuation.hpp"
 
@@ -95,14 +95,6 @@ bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const S
   return !ContinuesSurface(points, begin, end, s.max_step_m, s.min_chord_m, s.tolerance_m);
 }
 
-// True when the shelf at `T` stands within the completion's own preset gate.
-bool PassesGate(const geometry::Pose2& T, const geometry::ShelfModel& model,
-                const geometry::Pose2& preset, const LegCompletionConfig& gate) {
-  if ((T.translation() - preset.translation()).norm() > gate.max_offset_m) return false;
-  const double period = model.IsSquare() ? 0.5 * std::numbers::pi : std::numbers::pi;
-  return geometry::AngleDiffModulo(T.yaw, preset.yaw, period) <= gate.max_yaw_offset_rad;
-}
-
 }  // namespace
 
 CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
@@ -110,7 +102,8 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                                  const std::vector<Eigen::Vector2d>& centres,
                                  const std::vector<geometry::ShelfModel>& models,
                                  const geometry::Pose2& T_lidar_preset,
-                                 const LegCompletionConfig& config, const LegSearchConfig& search,
+                                 const LegCompletionConfig& config, const PresetGateConfig& gate,
+                                 const LegSearchConfig& search,
                                  const PreprocessConfig& preprocess) {
   CompletedLegSets out;
   const int n = static_cast<int>(centres.size());
@@ -125,7 +118,7 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
   for (const auto& m : models) {
     reach = std::max(reach, 0.5 * m.Diagonal() + 0.5 * m.leg.Extent() + config.corner_margin_m);
   }
-  double offset = config.max_offset_m;
+  double offset = gate.map_error_m;
   for (const auto& c : centres) {
     offset = std::max(offset, (c - T_lidar_preset.translation()).norm());
   }
@@ -194,7 +187,10 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                                       T.rotation() * (0.5 * (corners[k1] + corners[k2]));
             T.x = t.x();
             T.y = t.y();
-            if (!PassesGate(T, model, T_lidar_preset, config)) continue;
+            if (!WithinPreset(T, T_lidar_preset, gate.map_error_m, gate.map_error_yaw_rad,
+                              model.HeadingPeriod())) {
+              continue;
+            }
             std::array<int, 4> at{-1, -1, -1, -1};
             at[k1] = i;
             at[k2] = j;

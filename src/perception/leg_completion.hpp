@@ -29,17 +29,17 @@ struct CompletedLegSets {
 /// beside an occluder, or merged with a person's leg. A cut is no leg when its returns already
 /// were a candidate, when the object goes on past it or it lies on a surface with its beam
 /// neighbours, or when it is a single return beside a nearer one (a mixed point may look so).
-/// Only shelves within the completion's own preset gate (max_offset_m, max_yaw_offset_rad) are
-/// completed; the sets then go through the same fit, model screening and evidence as any other
-/// (the detector holds a completed 3-leg set to the no-preset err_sum bound). `centres` are the
-/// candidates' search centres (detector.cpp); `preprocess` gives the depth step, the surface
-/// rule's parameters and the widest leg cluster.
+/// Only shelves within the map's own error of the preset (`gate.map_error_m`,
+/// `gate.map_error_yaw_rad`) are completed; the sets then go through the same fit, model screening
+/// and evidence as any other (the detector holds a completed 3-leg set to the no-preset err_sum
+/// bound). `centres` are the candidates' search centres (detector.cpp); `preprocess` gives the
+/// depth step, the surface rule's parameters and the widest leg cluster.
 CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                                  const PreprocessOutput& pre,
                                  const std::vector<Eigen::Vector2d>& centres,
                                  const std::vector<geometry::ShelfModel>& models,
                                  const geometry::Pose2& T_lidar_preset,
-                                 const LegCompletionConfig& config, const LegSearchConfig& search,
-                                 const PreprocessConfig& preprocess);
+                                 const LegCompletionConfig& config, const PresetGateConfig& gate,
+                                 const LegSearchConfig& search, const PreprocessConfig& preprocess);
 
 }  // namespace shelfdock::perception

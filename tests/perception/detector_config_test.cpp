@@ -153,10 +153,13 @@ const RuleCase kCases[] = {
      [](auto& c) { c.preset_gate.max_yaw_offset_rad = -0.1; }},
     {"completion_margin", "completion.corner_margin_m",
      [](auto& c) { c.completion.corner_margin_m = -0.01; }},
-    {"completion_offset", "completion.max_offset_m",
-     [](auto& c) { c.completion.max_offset_m = 0.0; }},
-    {"completion_yaw", "completion.max_yaw_offset_rad",
-     [](auto& c) { c.completion.max_yaw_offset_rad = 0.0; }},
+    {"map_error", "preset_gate.map_error_m", [](auto& c) { c.preset_gate.map_error_m = 0.0; }},
+    {"map_error_yaw", "preset_gate.map_error_yaw_rad",
+     [](auto& c) { c.preset_gate.map_error_yaw_rad = 0.0; }},
+    {"map_error_beyond_gate", "preset_gate.map_error_m",
+     [](auto& c) { c.preset_gate.map_error_m = 0.6; }},
+    {"map_error_yaw_beyond_gate", "preset_gate.map_error_yaw_rad",
+     [](auto& c) { c.preset_gate.map_error_yaw_rad = 0.4; }},
 };
 
 TEST(DetectorConfigTest, DefaultsPass) { EXPECT_FALSE(FindConfigViolation(DetectorConfig{})); }

@@ -103,7 +103,7 @@ CompletedLegSets Complete(const std::vector<ScanPoint>& points, const geometry::
   const PreprocessOutput pre =
       Preprocess(points, kWlrAlpha, preset, PaperModels(), config.preprocess);
   return CompleteLegSets(points, pre, Centres(pre), PaperModels(), preset, config.completion,
-                         config.leg_search, config.preprocess);
+                         config.preset_gate, config.leg_search, config.preprocess);
 }
 
 TEST(LegCompletionTest, TheSceneLeavesTwoLegCandidatesSoTheSearchFindsNothing) {
@@ -214,13 +214,13 @@ TEST(LegCompletionTest, AWallThroughTheCornerIsNoLeg) {
   EXPECT_TRUE(Complete(points, TrueShelfPose()).sets.empty());
 }
 
-TEST(LegCompletionTest, OutsideTheCompletionGateNothingIsCompleted) {
+TEST(LegCompletionTest, BeyondTheMapsErrorNothingIsCompleted) {
   const geometry::Pose2 truth = TrueShelfPose();
   DetectorConfig config;
-  // 0.3 m off: inside the preset gate (0.5 m), outside the completion's (0.25 m).
+  // 0.3 m off: inside the preset gate (0.5 m), beyond the map's error (0.25 m).
   const geometry::Pose2 preset(truth.x + 0.3, truth.y, truth.yaw);
   EXPECT_TRUE(Complete(Scene(BesideTheLoneReturn::kDropout), preset, config).sets.empty());
-  // 0.2 rad turned: inside the gate's 0.35 rad, outside the completion's 0.15 rad.
+  // 0.2 rad turned: inside the gate's 0.35 rad, beyond the map's error (0.15 rad).
   const geometry::Pose2 turned(truth.x, truth.y, truth.yaw + 0.2);
   EXPECT_TRUE(Complete(Scene(BesideTheLoneReturn::kDropout), turned, config).sets.empty());
 }

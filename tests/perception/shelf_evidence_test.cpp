@@ -129,6 +129,30 @@ TEST(ShelfEvidenceTest, WithoutAPresetAFourthCornerBehindSomethingElseVouchesFor
   EXPECT_EQ(rs.stats.rejected.hidden_leg_no_preset, 0);
 }
 
+TEST(ShelfEvidenceTest, APresetVouchesForAHiddenFourthCornerOnlyWithinTheMapsError) {
+  // The same three posts and box. A preset 0.1 m / 0.05 rad off (inside the map's error, 0.25 m
+  // and 0.15 rad) vouches for the hidden fourth leg; one 0.35 m off, inside the 0.5 m preset gate
+  // but beyond the map's error, does not: the scan alone then decides, as without a preset.
+  const auto models = PaperModels();
+  const geometry::Pose2 T_shelf(2.2, 0.1, 0.3);
+  const auto scan = SimScan(ThreeCornerPostsAndABox(T_shelf), {}, 3);
+  const Detector detector(models);
+  const DetectionResult near = detector.Detect(scan, geometry::Pose2(2.3, 0.1, 0.35));
+  ASSERT_EQ(near.detections.size(), 1u);
+  EXPECT_EQ(near.detections[0].model, models[3].name);
+  EXPECT_LT(geometry::Distance(near.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
+  const DetectionResult far = detector.Detect(scan, geometry::Pose2(2.2, 0.45, 0.3));
+  EXPECT_TRUE(far.detections.empty());
+  EXPECT_GE(far.stats.rejected.hidden_leg_no_preset, 1);
+  // The same preset with the map's error widened to 0.4 m: vouched for again.
+  DetectorConfig wide;
+  wide.preset_gate.map_error_m = 0.4;
+  const DetectionResult widened =
+      Detector(models, wide).Detect(scan, geometry::Pose2(2.2, 0.45, 0.3));
+  ASSERT_EQ(widened.detections.size(), 1u);
+  EXPECT_LT(geometry::Distance(widened.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
+}
+
 // A 3-leg set whose fitted legs miss the model by 4-6 cm (err_sum; one post moved outward, as
 // far legs under 20 mm range noise can come out): with a preset it is within
 // three_leg_err_sum_preset_m and goes on to the evidence (returned, or rejected for a reason of
