@@ -39,6 +39,7 @@ struct EvalLayoutsOptions {
   std::vector<std::string> lidars;
   std::string json;
   std::string dump_failures;
+  bool no_preset = false;
 };
 
 /// "lidar_tim571.yaml" -> "tim571".
@@ -65,6 +66,7 @@ eval::LayoutSweepConfig SweepConfig(const EvalLayoutsOptions& opt) {
   eval::LayoutSweepConfig config;
   config.scenes_per_class = opt.scenes_per_class;
   config.seed0 = opt.seed0;
+  config.use_preset = !opt.no_preset;
   if (opt.classes.empty()) return config;
   config.classes.clear();
   for (const auto& name : opt.classes) {
@@ -89,7 +91,8 @@ void DumpFailures(const EvalLayoutsOptions& opt, const std::vector<geometry::She
   int written = 0;
   for (const auto& r : results) {
     if (!r.Failed()) continue;
-    const sim::LayoutScene scene = sim::GenerateLayoutScene(r.layout_class, r.seed, models, layout);
+    sim::LayoutScene scene = sim::GenerateLayoutScene(r.layout_class, r.seed, models, layout);
+    if (opt.no_preset) scene.T_world_preset.reset();  // the detect line then has no --preset
     io::WriteLayoutFailure(opt.dump_failures, scene, r, detect_args);
     ++written;
   }
@@ -163,6 +166,9 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--lidar", opt->lidars,
                   "LiDAR config YAML, repeatable; scenes draw among them (default: the WLR-716, "
                   "config/lidar_tim571.yaml and config/lidar_ust10lx.yaml)");
+  cmd->add_flag("--no-preset", opt->no_preset,
+                "detect without the map's preset (a robot that searches, e.g. after a restart): "
+                "with neighbours about, the first detection is then often another shelf");
   cmd->add_option("--json", opt->json, "write the table and the failures as JSON");
   cmd->add_option("--dump-failures", opt->dump_failures,
                   "write each failing scene's scan and truth (with a detect command) here");

@@ -146,8 +146,8 @@ std::vector<LayoutSceneResult> RunLayoutSweep(const perception::Detector& detect
       const std::uint64_t seed = config.seed0 + static_cast<std::uint64_t>(i);
       const sim::LayoutScene scene =
           sim::GenerateLayoutScene(layout_class, seed, models, layout_config);
-      const perception::DetectionResult detected =
-          detector.Detect(sim::SimulateLayoutScan(scene), scene.PresetInLidar());
+      const perception::DetectionResult detected = detector.Detect(
+          sim::SimulateLayoutScan(scene), config.use_preset ? scene.PresetInLidar() : std::nullopt);
       results.push_back(ScoreLayoutScene(scene, detected, config));
     }
   }

@@ -87,6 +87,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("leg_width_bias_slack_m", c.leg_width_bias_slack_m);
   f.Read("leg_width_scale_m", c.leg_width_scale_m);
   f.Read("min_confidence", c.min_confidence);
+  f.Read("min_confidence_unvouched", c.min_confidence_unvouched);
   f.Read("overlap_margin_m", c.overlap_margin_m);
   f.RejectUnknown();
 }

@@ -210,7 +210,14 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     rec.verdict = Verdict::kHiddenLegNoPreset;
     return h;
   }
-  if (ev.confidence < config.evidence.min_confidence) {
+  // Three legs that only the scan vouches for (no preset, or the shelf beyond the map's error)
+  // and whose fourth leg the scan never saw must be surer than min_confidence: in clutter, posts
+  // around the sensor make a shelf over it whose fourth corner lies in the blind sector behind.
+  const double min_confidence =
+      set.count == 3 && !vouched && ev.legs_seen < 4
+          ? std::max(config.evidence.min_confidence, config.evidence.min_confidence_unvouched)
+          : config.evidence.min_confidence;
+  if (ev.confidence < min_confidence) {
     rec.verdict = Verdict::kLowConfidence;
     return h;
   }

@@ -80,6 +80,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.leg_width_scale_m > 0.0, "evidence.leg_width_scale_m", "> 0");
   k.Check(e.min_confidence >= 0.0 && e.min_confidence < 1.0, "evidence.min_confidence",
           "in [0, 1)");
+  k.Check(e.min_confidence_unvouched >= 0.0 && e.min_confidence_unvouched < 1.0,
+          "evidence.min_confidence_unvouched", "in [0, 1)");
   k.Check(e.overlap_margin_m >= 0.0, "evidence.overlap_margin_m", ">= 0");
 
   const auto& g = c.preset_gate;

@@ -120,6 +120,8 @@ struct EvidenceConfig {
   double leg_width_bias_slack_m = 0.006;  ///< [m] legs' mean width: see leg_width_bias_beams
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
   double min_confidence = 0.3;            ///< [-] below this a hypothesis is not returned
+  double min_confidence_unvouched = 0.4;  ///< [-] the same for three legs (the fourth not seen)
+                                          ///< with no preset or beyond the map's error of it
   double overlap_margin_m = 0.05;         ///< [m] two hypotheses whose leg rectangles, each
                                           ///< shrunk by this on every side, overlap compete as
                                           ///< if they shared a leg (shelves do not interpenetrate)

@@ -136,5 +136,28 @@ TEST(LayoutSweepTest, EveryClassIsGeneratedAndScored) {
   EXPECT_EQ(phantoms, overall.phantoms);
 }
 
+// --no-preset: the detector gets no preset, so its region of interest is no longer the circle
+// around the preset (paper 3.1) but the whole scan, and the target is still found in the open.
+TEST(LayoutSweepTest, WithoutAPresetTheWholeScanIsSearched) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  const sim::LayoutConfig layout = LayoutWithPresets();
+  LayoutSweepConfig config;
+  config.scenes_per_class = 20;
+  config.seed0 = kSeed0;
+  config.classes = {sim::LayoutClass::kOpen};
+  const perception::Detector detector(models);
+  const auto with = RunLayoutSweep(detector, models, layout, config);
+  config.use_preset = false;
+  const auto without = RunLayoutSweep(detector, models, layout, config);
+  ASSERT_EQ(with.size(), without.size());
+  int right_first = 0;
+  for (std::size_t i = 0; i < with.size(); ++i) {
+    SCOPED_TRACE(with[i].seed);
+    EXPECT_GT(without[i].stats.roi_points, with[i].stats.roi_points);
+    right_first += without[i].outcome == SceneOutcome::kRightFirst;
+  }
+  EXPECT_GT(right_first, 0);
+}
+
 }  // namespace
 }  // namespace shelfdock::eval

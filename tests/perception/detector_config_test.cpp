@@ -145,6 +145,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.evidence.min_confidence = -0.1; }},
     {"min_confidence_one", "evidence.min_confidence",
      [](auto& c) { c.evidence.min_confidence = 1.0; }},
+    {"min_confidence_unvouched", "evidence.min_confidence_unvouched",
+     [](auto& c) { c.evidence.min_confidence_unvouched = 1.0; }},
     {"overlap_margin", "evidence.overlap_margin_m",
      [](auto& c) { c.evidence.overlap_margin_m = -0.01; }},
     {"preset_gate_offset", "preset_gate.max_offset_m",

@@ -153,6 +153,41 @@ TEST(ShelfEvidenceTest, APresetVouchesForAHiddenFourthCornerOnlyWithinTheMapsErr
   EXPECT_LT(geometry::Distance(widened.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
 }
 
+TEST(ShelfEvidenceTest, ThreeLegsNoMapVouchesForMustBeSurer) {
+  // A 1250x1250 shelf over the sensor, one leg in the blind sector behind it (the WLR-716 sees
+  // +-135 deg): three legs seen, the fourth unobserved. Without a preset only the scan vouches
+  // for the shelf, and posts around the sensor in clutter look the same: such a 3-leg shelf must
+  // reach evidence.min_confidence_unvouched, not just min_confidence. With a preset at the
+  // shelf, min_confidence is enough.
+  const auto models = PaperModels();
+  const geometry::ShelfModel& large = models[2];
+  const geometry::Pose2 T_shelf(0.1, 0.3, 0.0);
+  const Eigen::Vector2d blind = T_shelf * large.LegCentres()[0];
+  ASSERT_GT(std::abs(std::atan2(blind.y(), blind.x())), 2.4);  // behind the 135 deg edge
+  sim::World world;
+  testing::AddRoom(world);
+  world.AddShelf(1, large, T_shelf);
+  const auto scan = SimScan(world, {}, 5);
+  const DetectionResult found = Detector(models).Detect(scan);
+  ASSERT_EQ(found.detections.size(), 1u);
+  const Detection& d = found.detections[0];
+  EXPECT_EQ(d.model, large.name);
+  EXPECT_EQ(d.legs_used, 3);
+  EXPECT_LT(geometry::Distance(d.T_lidar_shelf, T_shelf), kCentreTol);
+  EXPECT_GE(d.confidence, DetectorConfig{}.evidence.min_confidence_unvouched);
+  // The bar just above this shelf's confidence: not returned without a preset ...
+  DetectorConfig strict;
+  strict.evidence.min_confidence_unvouched = std::min(0.99, d.confidence + 0.01);
+  const DetectionResult unvouched = Detector(models, strict).Detect(scan);
+  EXPECT_TRUE(unvouched.detections.empty());
+  EXPECT_GE(unvouched.stats.rejected.low_confidence, 1);
+  // ... and returned with the map's preset 0.1 m / 0.05 rad off.
+  const DetectionResult vouched =
+      Detector(models, strict).Detect(scan, geometry::Pose2(0.2, 0.3, 0.05));
+  ASSERT_EQ(vouched.detections.size(), 1u);
+  EXPECT_LT(geometry::Distance(vouched.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
+}
+
 // A 3-leg set whose fitted legs miss the model by 4-6 cm (err_sum; one post moved outward, as
 // far legs under 20 mm range noise can come out): with a preset it is within
 // three_leg_err_sum_preset_m and goes on to the evidence (returned, or rejected for a reason of
