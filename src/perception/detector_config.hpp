@@ -161,6 +161,11 @@ struct LegCompletionConfig {
   bool enabled = true;            ///< with a preset and nothing found near it, complete pairs
   double corner_margin_m = 0.03;  ///< [m] returns within half the leg's extent plus this of a
                                   ///< predicted corner are its leg
+  double max_blend_m = 0.3;       ///< [m] with none there, returns on the corner's bearing up to
+                                  ///< this far behind it and in front of their background are
+                                  ///< the leg blended with it (its bearing only); 0: off
+  double blended_max_err_sum_m = 0.03;  ///< [m] a set with a blended leg: Eq. 2 err_sum bound
+  double blended_min_confidence = 0.5;  ///< [-] and the confidence it must reach
 };
 
 /// All detector parameters, one struct per stage (config/detector.yaml).

@@ -21,6 +21,9 @@ struct Cluster {
   double extent_m = 0.0;  ///< [m] largest distance of a point from the first one
   int span = -1;          ///< index in PreprocessOutput::spans (-1 when built on its own)
   SilhouetteEdges edges;  ///< where the scan shows the object's outline to end (leg fit)
+  /// [m] Set for a thin leg seen only blended with its background (CompleteLegSets): its
+  /// returns tell its bearing, not its range, so the leg stands at this range on their bearing.
+  std::optional<double> assumed_range_m;
 };
 
 /// A cluster as a span [begin, end) of a point vector in beam order, with its shape.

@@ -225,5 +225,65 @@ TEST(LegCompletionTest, BeyondTheMapsErrorNothingIsCompleted) {
   EXPECT_TRUE(Complete(Scene(BesideTheLoneReturn::kDropout), turned, config).sets.empty());
 }
 
+// A TiM571-like beam (0.87 deg spot, noise free, no dropouts) on a round-leg 900 x 810 shelf
+// whose back legs stand 2 m out with a wall `gap` behind them: the spot is wider than a 26 mm leg
+// there, so each back leg returns only blends of leg and wall, centimetres behind the leg, and
+// the search of paper 3.2 finds no shelf. The front legs and the preset complete it: the blended
+// returns give the back legs' bearings (CompletedLegSets with assumed ranges), and the shelf is
+// returned within 1 cm / 10 mrad of the truth. With max_blend_m 0 it is not.
+sim::LidarConfig WideBeam() {
+  sim::LidarConfig c;
+  c.enable_range_noise = false;
+  c.enable_dropouts = false;
+  c.beam_divergence_rad = 0.0153;
+  return c;
+}
+
+TEST(LegCompletionTest, ALegSeenOnlyBlendedWithItsBackgroundIsPlacedByItsBearing) {
+  const geometry::ShelfModel round = PaperModels()[0];
+  const geometry::Pose2 T_shelf(1.55, 0.05, 0.02);
+  sim::World world;
+  world.AddShelf(1, round, T_shelf);
+  world.AddWall({{2.3, -3.0}, {2.3, 3.0}});
+  const auto scan = testing::SimScan(world, {}, 1, WideBeam());
+  const geometry::Pose2 preset(T_shelf.x + 0.1, T_shelf.y - 0.05, T_shelf.yaw + 0.05);
+  const DetectionResult r = Detector(PaperModels()).Detect(scan, preset);
+  ASSERT_EQ(r.detections.size(), 1u);
+  EXPECT_GT(r.stats.completed_sets, 0);
+  const Detection& d = r.detections[0];
+  EXPECT_EQ(d.model, round.name);
+  EXPECT_LT(geometry::Distance(d.T_lidar_shelf, T_shelf), 0.01);
+  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, T_shelf.yaw, false), 0.01);
+  DetectorConfig off;
+  off.completion.max_blend_m = 0.0;
+  const DetectionResult without = Detector(PaperModels(), off).Detect(scan, preset);
+  for (const Detection& w : without.detections) {
+    EXPECT_GT(geometry::Distance(w.T_lidar_shelf, T_shelf), 0.05) << w.model;
+  }
+  EXPECT_TRUE(without.detections.empty());
+}
+
+// The shelf's front legs as posts, its back corners empty, and a 40 mm post 0.25 m behind each
+// back corner on its bearing (no model fits the four posts): the search took those posts as legs
+// at their own range, so they are no blended view of legs at the corners, and no shelf is
+// returned (a neighbour's leg behind an empty corner made a phantom before this rule).
+TEST(LegCompletionTest, LegCandidatesBehindEmptyCornersAreNoBlend) {
+  const geometry::ShelfModel round = PaperModels()[0];
+  const geometry::Pose2 T_shelf(1.55, 0.05, 0.02);
+  const auto corners = round.LegCentres();
+  sim::World world;
+  for (int k : {0, 3}) world.AddRoundPost(T_shelf * corners[k], round.leg.Radius());
+  for (int k : {1, 2}) {
+    const Eigen::Vector2d empty = T_shelf * corners[k];
+    const Eigen::Vector2d behind = empty + 0.25 * empty.normalized();
+    world.AddSquarePost(geometry::Pose2(behind.x(), behind.y(), 0.3), 0.04);
+  }
+  world.AddWall({{2.8, -3.0}, {2.8, 3.0}});
+  const auto scan = testing::SimScan(world, {}, 1, WideBeam());
+  const geometry::Pose2 preset(T_shelf.x + 0.1, T_shelf.y - 0.05, T_shelf.yaw + 0.05);
+  const DetectionResult r = Detector(PaperModels()).Detect(scan, preset);
+  EXPECT_TRUE(r.detections.empty());
+}
+
 }  // namespace
 }  // namespace shelfdock::perception
