@@ -165,10 +165,10 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     return h;
   }
   // Two edges constrain a shelf less than four: a 3-leg set must match more tightly. The preset
-  // lets it match less tightly near where it says, but not a set the preset already vouched for by
-  // completing it (a TiM571's blended return behind a round leg, at a 1075x883's corner:
-  // eval-layouts
-  // --scenes-per-class 1000 --seed0 40001, 1 phantom; 9 right shelves of 36000 lost).
+  // lets it match less tightly near where it says, but not a set the preset already vouched for
+  // by completing it (a TiM571's blended return behind a round leg, at a 1075x883's corner:
+  // eval-layouts --scenes-per-class 1000 --seed0 40001, 1 phantom; 9 right shelves of 36000
+  // lost).
   // The map vouches for a shelf only where it says one stands, within its own error; a shelf
   // farther off (pushed about, or no shelf at all: three posts in clutter near an empty slot)
   // is held to what the scan alone shows, as without a preset (eval-layouts --scenes-per-class
