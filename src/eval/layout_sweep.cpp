@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <tuple>
 #include <utility>
 
@@ -11,13 +10,6 @@
 namespace shelfdock::eval {
 
 namespace {
-
-/// Smallest heading difference modulo the model's symmetry (pi, or pi/2 for square models):
-/// the detector cannot tell the ends of a shelf apart and is not asked to.
-double SymmetricHeadingError(double yaw_rad, double truth_rad, bool square) {
-  return geometry::AngleDiffModulo(yaw_rad, truth_rad,
-                                   square ? 0.5 * std::numbers::pi : std::numbers::pi);
-}
 
 /// The true shelf nearest to a detected centre (id, distance); (-1, inf) without shelves.
 std::pair<int, double> NearestShelf(const sim::World& world, const Eigen::Vector2d& p_world) {
@@ -64,8 +56,10 @@ SceneOutcome Classify(const LayoutSceneResult& r, bool right) {
 void RecordErrors(const sim::ShelfInstance& target, const perception::Detection& d,
                   const FirstDetection& first, LayoutSceneResult* r) {
   r->centre_error_m = geometry::Distance(first.T_world_shelf, target.T_world_shelf);
-  r->heading_error_rad = SymmetricHeadingError(first.T_world_shelf.yaw, target.T_world_shelf.yaw,
-                                               target.model.IsSquare());
+  // Modulo the model's symmetry: the detector cannot tell the ends of a shelf apart and is not
+  // asked to.
+  r->heading_error_rad = geometry::AngleDiffModulo(
+      first.T_world_shelf.yaw, target.T_world_shelf.yaw, target.model.HeadingPeriod());
   r->length_error_m = d.length_m - target.model.length_m;
   r->width_error_m = d.width_m - target.model.width_m;
 }

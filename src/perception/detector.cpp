@@ -112,9 +112,9 @@ std::array<LegSigma, 4> LegSigmas(const std::array<Eigen::Vector2d, 4>& legs, co
   std::array<LegSigma, 4> sigma{};
   for (int i = 0; i < set.count; ++i) {
     const double range = std::max(legs[i].norm(), 0.1);
-    const double n = static_cast<double>(in.pre.candidates[set.legs[i]].points.size());
-    const double step = range * std::abs(in.angle_increment_rad);
     const Cluster& c = in.pre.candidates[set.legs[i]];
+    const double n = static_cast<double>(c.points.size());
+    const double step = range * std::abs(in.angle_increment_rad);
     // A blended leg's range is the completed shelf's, not a measurement: only its bearing counts.
     sigma[i].along_m = c.assumed_range_m
                            ? in.config.completion.max_blend_m
@@ -142,7 +142,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     // A leg seen only blended with its background (CompleteLegSets): on its returns' bearing,
     // at the range the completed shelf puts it.
     legs[i] = c.assumed_range_m
-                  ? Eigen::Vector2d(*c.assumed_range_m * c.centroid.normalized())
+                  ? AssumedCentre(c)
                   : cache.Get(set.legs[i], model, hint, in.pre.candidates, config.leg_fit).centre;
   }
   rec.legs.assign(legs.begin(), legs.begin() + set.count);
@@ -350,7 +350,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   double half_depth = std::numeric_limits<double>::infinity();
   for (const auto& m : models_) half_depth = std::min(half_depth, 0.5 * m.leg.width_m);
   auto search_centre = [half_depth](const Cluster& c) -> Eigen::Vector2d {
-    if (c.assumed_range_m) return *c.assumed_range_m * c.centroid.normalized();  // a blended leg
+    if (c.assumed_range_m) return AssumedCentre(c);  // a blended leg
     const double r = c.centroid.norm();
     return r > half_depth ? Eigen::Vector2d(c.centroid * (1.0 + half_depth / r)) : c.centroid;
   };

@@ -108,18 +108,16 @@ bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const S
 // return in front of the leg (something hides it), when the background is unknown (no return
 // beside the window) or when the blend is not one run of beams.
 Cluster BlendedView(const std::vector<ScanPoint>& points, const Eigen::Vector2d& corner,
-                    const geometry::LegModel& leg, double margin_m, double increment_rad,
-                    double max_blend_m, double step_m) {
+                    const geometry::LegModel& leg, double margin_m, double max_blend_m,
+                    double step_m) {
   Cluster c;
   const double range = corner.norm();
-  if (range <= 0.0 || increment_rad == 0.0 || points.empty()) return c;
-  const double bearing = std::atan2(corner.y(), corner.x());
-  const double half = std::atan2(0.5 * leg.Extent() + margin_m, range) + std::abs(increment_rad);
-  const ScanPoint& a = points.front();
-  const double centre = a.beam + geometry::AngleDiff(bearing, a.angle) / increment_rad;
-  const double half_beams = half / std::abs(increment_rad);
-  const int first = static_cast<int>(std::ceil(centre - half_beams));
-  const int last = static_cast<int>(std::floor(centre + half_beams));
+  if (range <= 0.0) return c;
+  const auto window = BeamWindow(points, std::atan2(corner.y(), corner.x()),
+                                 std::atan2(0.5 * leg.Extent() + margin_m, range));
+  if (!window) return c;
+  const int first = window->first - 1;  // a beam either way
+  const int last = window->second + 1;
   double background = std::numeric_limits<double>::infinity();
   for (const int beam : {first - 1, last + 1}) {
     if (const ScanPoint* q = FindBeam(points, beam)) background = std::min(background, q->range);
@@ -159,13 +157,6 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
   const Surroundings look{SplitStep(preprocess, pre.range_noise_m), preprocess.surface_max_step_m,
                           MaxLegExtent(models, preprocess, pre.range_noise_m),
                           SurfaceTolerance(preprocess, pre.range_noise_m)};
-
-  // The beam increment, for the bearing windows of blended views.
-  double increment = 0.0;
-  if (scan_points.size() > 1 && scan_points.back().beam != scan_points.front().beam) {
-    increment = (scan_points.back().angle - scan_points.front().angle) /
-                static_cast<double>(scan_points.back().beam - scan_points.front().beam);
-  }
 
   // Only returns near the preset can stand at a completed corner.
   double reach = 0.0;
@@ -256,7 +247,7 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
               const Eigen::Vector2d corner = T * corners[k];
               Cluster c = CutLeg(scan_points, near, corner, radius);
               if (c.points.empty() && config.max_blend_m > 0.0) {
-                c = BlendedView(scan_points, corner, model.leg, config.corner_margin_m, increment,
+                c = BlendedView(scan_points, corner, model.leg, config.corner_margin_m,
                                 config.max_blend_m, look.step_m);
                 // Returns the search already took as a leg at their own range had their chance:
                 // a neighbour's leg standing behind the corner on its bearing is no blend

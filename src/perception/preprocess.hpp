@@ -26,6 +26,12 @@ struct Cluster {
   std::optional<double> assumed_range_m;
 };
 
+/// Where a blended leg (Cluster::assumed_range_m set) stands: at its assumed range on the
+/// bearing of its returns' mean.
+inline Eigen::Vector2d AssumedCentre(const Cluster& c) {
+  return c.assumed_range_m.value_or(c.centroid.norm()) * c.centroid.normalized();
+}
+
 /// A cluster as a span [begin, end) of a point vector in beam order, with its shape.
 struct ClusterSpan {
   std::size_t begin = 0;

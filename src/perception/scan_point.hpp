@@ -1,10 +1,15 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "geometry/angle.hpp"
 
 namespace shelfdock::perception {
 
@@ -28,6 +33,21 @@ inline std::size_t IndexOfBeam(const std::vector<ScanPoint>& points, int beam) {
 inline const ScanPoint* FindBeam(const std::vector<ScanPoint>& points, int beam) {
   const std::size_t i = IndexOfBeam(points, beam);
   return i < points.size() && points[i].beam == beam ? &points[i] : nullptr;
+}
+
+/// The first and last beam (inclusive) whose bearing lies within `half_rad` of `bearing_rad`,
+/// the fan's start and increment read off `points` (beam order); nullopt when they cannot be
+/// (fewer than two beams). Beams outside the scan are counted too.
+inline std::optional<std::pair<int, int>> BeamWindow(const std::vector<ScanPoint>& points,
+                                                     double bearing_rad, double half_rad) {
+  if (points.empty() || points.back().beam == points.front().beam) return std::nullopt;
+  const ScanPoint& a = points.front();
+  const ScanPoint& b = points.back();
+  const double inc = (b.angle - a.angle) / static_cast<double>(b.beam - a.beam);
+  const double centre = a.beam + geometry::AngleDiff(bearing_rad, a.angle) / inc;
+  const double half = half_rad / std::abs(inc);
+  return std::pair{static_cast<int>(std::ceil(centre - half)),
+                   static_cast<int>(std::floor(centre + half))};
 }
 
 }  // namespace shelfdock::perception

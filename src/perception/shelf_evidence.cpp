@@ -97,14 +97,9 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
   // Beams of the window that left no point: no return (a dark or shiny leg can swallow the
   // pulse) or a mixed point the trailing filter dropped (an edge was there). Either may be the
   // leg, so then one beam through it is no proof.
-  const ScanPoint& a = pre.points.front();
-  const ScanPoint& b = pre.points.back();
   int window_beams = wide_returns;
-  if (b.beam != a.beam) {
-    const double inc = (b.angle - a.angle) / static_cast<double>(b.beam - a.beam);
-    const double centre = a.beam + geometry::AngleDiff(bearing, a.angle) / inc;
-    const double half = wide / std::abs(inc);
-    window_beams = static_cast<int>(std::floor(centre + half) - std::ceil(centre - half)) + 1;
+  if (const auto window = BeamWindow(pre.points, bearing, wide)) {
+    window_beams = window->second - window->first + 1;
   }
   const bool silent_beams = window_beams > wide_returns;
   const int needed =
