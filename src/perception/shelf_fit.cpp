@@ -25,8 +25,14 @@ namespace {
 // beam step across the beam (its silhouette) but only to range noise / sqrt(beams on the leg)
 // along it, so equal weights let the range noise of the far legs into the heading.
 struct CornerCost {
-  std::array<Eigen::Vector2d, 4> legs;
-  std::array<Eigen::Vector2d, 4> corners;  // shelf frame
+  // Zeroed: a 3-leg set leaves slot 3 unset, and its residual is 0 * (A * e) only while e is
+  // finite (Eigen leaves vectors uninitialised; stack garbage there made the sanitizer build's
+  // fits fail now and then with NaN residuals).
+  std::array<Eigen::Vector2d, 4> legs{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                                      Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  std::array<Eigen::Vector2d, 4> corners{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                                         Eigen::Vector2d::Zero(),
+                                         Eigen::Vector2d::Zero()};  // shelf frame
   std::array<double, 4> sqrt_w{0.0, 0.0, 0.0, 0.0};
   // Rows: (along, across the leg's beam) / their std.
   std::array<Eigen::Matrix2d, 4> info_sqrt{Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity(),
