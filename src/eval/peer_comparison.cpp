@@ -1,7 +1,6 @@
 #include "eval/peer_comparison.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <utility>
 
@@ -19,12 +18,6 @@ namespace {
 
 Quantiles QuantilesOf(const std::vector<double>& v) {
   return {Quantile(v, 0.5), Quantile(v, 0.95)};
-}
-
-double SymmetricYawError(double yaw, double truth, bool square) {
-  const double step = square ? 0.5 * std::numbers::pi : std::numbers::pi;
-  const double d = geometry::AngleDiff(yaw, truth);
-  return std::abs(d - step * std::round(d / step));
 }
 
 }  // namespace
@@ -86,8 +79,8 @@ std::vector<PeerRow> ComparePeers(const PeerSceneSet& set,
       if (e > scoring.success_radius_m) continue;
       ++row.successes;
       pos.push_back(e);
-      yaw.push_back(
-          SymmetricYawError(answer->T_lidar_shelf.yaw, scene.T_lidar_shelf.yaw, scene.square));
+      yaw.push_back(geometry::AngleDiffModulo(answer->T_lidar_shelf.yaw, scene.T_lidar_shelf.yaw,
+                                              scene.heading_period_rad));
     }
     row.position_m = QuantilesOf(pos);
     row.heading_rad = QuantilesOf(yaw);

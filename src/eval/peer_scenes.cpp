@@ -25,14 +25,14 @@ PeerScene Scan(const sim::World& world, const sim::LidarConfig& lidar, std::uint
                const geometry::ShelfModel& model, const Pose2& truth,
                const std::optional<Pose2>& preset) {
   sim::Lidar sensor(lidar, seed);
-  return {seed, sensor.Scan(world, Pose2()), model.name, model.IsSquare(), truth, preset};
+  return {seed, sensor.Scan(world, Pose2()), model.name, model.HeadingPeriod(), truth, preset};
 }
 
 /// A layout scene as a peer scene (the scene's own sensor with `lidar`'s flaws and its noise).
 PeerScene FromLayout(const sim::LayoutScene& scene, std::uint64_t seed) {
   const sim::ShelfInstance target = *scene.Target();
   const Pose2 truth = scene.T_world_lidar.inverse() * target.T_world_shelf;
-  return {seed,  sim::SimulateLayoutScan(scene), target.model.name, target.model.IsSquare(),
+  return {seed,  sim::SimulateLayoutScan(scene), target.model.name, target.model.HeadingPeriod(),
           truth, scene.PresetInLidar()};
 }
 

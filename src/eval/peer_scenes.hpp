@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,8 +17,8 @@ namespace shelfdock::eval {
 struct PeerScene {
   std::uint64_t seed = 0;
   geometry::LaserScan scan;
-  std::string model;  ///< the target's model
-  bool square = false;
+  std::string model;                              ///< the target's model
+  double heading_period_rad = std::numbers::pi;   ///< the target model's ShelfModel::HeadingPeriod
   geometry::Pose2 T_lidar_shelf;                  ///< true target pose
   std::optional<geometry::Pose2> T_lidar_preset;  ///< what the robot is told
 };

@@ -263,9 +263,9 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   d.leg_width_bias_m = ev.leg_width_bias_m;
   const double reference =
       in.T_lidar_preset ? in.T_lidar_preset->yaw : std::atan2(d.T_lidar_shelf.y, d.T_lidar_shelf.x);
-  d.T_lidar_shelf.yaw = ResolveHeading(d.T_lidar_shelf.yaw, reference, model.IsSquare());
+  d.T_lidar_shelf.yaw = ResolveHeading(d.T_lidar_shelf.yaw, reference, model.HeadingPeriod());
   geometry::Pose2 T_fit = fit->T_lidar_shelf;
-  T_fit.yaw = ResolveHeading(T_fit.yaw, d.T_lidar_shelf.yaw, model.IsSquare());
+  T_fit.yaw = ResolveHeading(T_fit.yaw, d.T_lidar_shelf.yaw, model.HeadingPeriod());
   d.T_lidar_shelf_fit = T_fit;
   return h;
 }
@@ -305,10 +305,9 @@ const char* VerdictName(Verdict verdict) {
   return "unknown";
 }
 
-double ResolveHeading(double yaw_rad, double reference_rad, bool square) {
-  const double step = square ? 0.5 * std::numbers::pi : std::numbers::pi;
-  const double k = std::round(geometry::AngleDiff(reference_rad, yaw_rad) / step);
-  return geometry::WrapAngle(yaw_rad + k * step);
+double ResolveHeading(double yaw_rad, double reference_rad, double period_rad) {
+  const double k = std::round(geometry::AngleDiff(reference_rad, yaw_rad) / period_rad);
+  return geometry::WrapAngle(yaw_rad + k * period_rad);
 }
 
 Detector::Detector(std::vector<geometry::ShelfModel> models, DetectorConfig config)

@@ -51,8 +51,8 @@ class Detector {
   DetectorConfig config_;
 };
 
-/// Picks among the symmetric equivalents of `yaw_rad` (yaw + k pi, or k pi/2 for a square
-/// model) the one closest to `reference_rad`.
-double ResolveHeading(double yaw_rad, double reference_rad, bool square);
+/// Picks among the symmetric equivalents of `yaw_rad` (yaw + k period_rad; the model's
+/// ShelfModel::HeadingPeriod: pi, or pi/2 for a square model) the one closest to `reference_rad`.
+double ResolveHeading(double yaw_rad, double reference_rad, double period_rad);
 
 }  // namespace shelfdock::perception

@@ -45,7 +45,7 @@ std::optional<PeerEstimate> CentroidPeerDetect(const geometry::LaserScan& scan,
     }
     geometry::Pose2 T_lidar_shelf(centre.x(), centre.y(), std::atan2(along.y(), along.x()));
     T_lidar_shelf.yaw =
-        ResolvePeerHeading(T_lidar_shelf.yaw, T_lidar_shelf, T_lidar_preset, model.IsSquare());
+        ResolvePeerHeading(T_lidar_shelf.yaw, T_lidar_shelf, T_lidar_preset, model.HeadingPeriod());
     const double score = T_lidar_preset ? geometry::Distance(T_lidar_shelf, *T_lidar_preset)
                                         : pairs.front().err_sum - set.count;
     if (score < best_score) {

@@ -101,7 +101,7 @@ std::optional<PeerEstimate> CornerPeerDetect(const geometry::LaserScan& scan,
   geometry::Pose2 T_lidar_shelf(c.x(), c.y(), 0.0);
   const double k = model.IsSquare() ? 4.0 : 2.0;
   const double yaw = std::atan2(best->heading_sum.y(), best->heading_sum.x()) / k;
-  T_lidar_shelf.yaw = ResolvePeerHeading(yaw, T_lidar_shelf, T_lidar_preset, model.IsSquare());
+  T_lidar_shelf.yaw = ResolvePeerHeading(yaw, T_lidar_shelf, T_lidar_preset, model.HeadingPeriod());
   // Three legs make one right-angle corner; a second corner means the fourth leg was seen.
   return PeerEstimate{model.name, T_lidar_shelf, best->corners >= 2 ? 4 : 3};
 }

@@ -202,7 +202,7 @@ std::optional<PeerEstimate> IcpPeer::Detect(
   const geometry::ShelfModel& model = models_[best->model];
   geometry::Pose2 T_lidar_shelf = best->T_lidar_shelf;
   T_lidar_shelf.yaw =
-      ResolvePeerHeading(T_lidar_shelf.yaw, T_lidar_shelf, T_lidar_preset, model.IsSquare());
+      ResolvePeerHeading(T_lidar_shelf.yaw, T_lidar_shelf, T_lidar_preset, model.HeadingPeriod());
   return PeerEstimate{model.name, T_lidar_shelf, best->legs};
 }
 

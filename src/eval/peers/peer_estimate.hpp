@@ -15,9 +15,9 @@ struct PeerEstimate {
 };
 
 /// The heading convention every method is scored with (the detector's): toward the preset
-/// heading when there is one, else the shelf's x axis pointing away from the sensor. `square`:
-/// ambiguous by pi/2, else by pi.
+/// heading when there is one, else the shelf's x axis pointing away from the sensor. `period_rad`:
+/// the model's ShelfModel::HeadingPeriod (pi/2 for a square, else pi).
 double ResolvePeerHeading(double yaw_rad, const geometry::Pose2& T_lidar_shelf,
-                          const std::optional<geometry::Pose2>& T_lidar_preset, bool square);
+                          const std::optional<geometry::Pose2>& T_lidar_preset, double period_rad);
 
 }  // namespace shelfdock::eval::peers
