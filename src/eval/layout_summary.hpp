@@ -60,4 +60,18 @@ std::vector<LayoutSummary> SummariseLayoutsByClass(const std::vector<LayoutScene
 std::vector<LayoutSummary> SummariseLayoutsByLidar(const std::vector<LayoutSceneResult>& scenes,
                                                    const LayoutSweepConfig& config);
 
+/// How close models were told apart: scenes whose first detection stands on the target (centre
+/// within right_radius_m) under another model, and how many of them and of the right-first scenes
+/// carried a runner-up model with a chi-square margin under `margin` (Detection::runner_up_*).
+struct ModelConfusionSummary {
+  double margin = 0.0;          ///< [-] the chi-square margin counted as "unsure"
+  int confusions = 0;           ///< wrong first: the target's place, another model
+  int confusions_flagged = 0;   ///< of those, the target's model runner-up within `margin`
+  int right_first = 0;          ///< right-first scenes
+  int right_first_flagged = 0;  ///< of those, some runner-up within `margin`
+};
+/// Counts ModelConfusionSummary over `scenes` (right_radius_m from `config`).
+ModelConfusionSummary SummariseModelConfusions(const std::vector<LayoutSceneResult>& scenes,
+                                               const LayoutSweepConfig& config, double margin);
+
 }  // namespace shelfdock::eval

@@ -38,6 +38,9 @@ nlohmann::json DetectionToJson(const perception::Detection& d,
                       {"interior_points", d.interior_points},
                       {"leg_width_error", d.leg_width_error_m},
                       {"leg_width_bias", d.leg_width_bias_m}};
+  if (d.runner_up_model) {
+    j["runner_up"] = {{"model", *d.runner_up_model}, {"chi2_margin", d.runner_up_chi2_margin}};
+  }
   if (T_base_lidar) j["base"] = PoseJson(perception::ShelfInBase(d, *T_base_lidar));
   if (T_map_base) {
     j["map"] =

@@ -34,6 +34,12 @@ struct Detection {
   int interior_points = 0;         ///< scan points inside the footprint (occluders excused)
   double leg_width_error_m = 0.0;  ///< [m] worst seen leg width against the model's, beyond a beam
   double leg_width_bias_m = 0.0;   ///< [m] mean seen leg width minus the model's silhouette
+  /// The next-best model on the same legs, when its hypothesis passed every check too (close
+  /// models, e.g. 1075x883 and 1080x856 with 27 mm between their widths), and how much worse
+  /// the legs fit it: its legs' chi-square minus this model's (>= 0). A margin of a few units
+  /// means the returns barely tell the two models apart; empty: no other model fitted.
+  std::optional<std::string> runner_up_model;
+  double runner_up_chi2_margin = 0.0;  ///< [-]
 
   /// The pose to fuse with `covariance` in a filter: the fit's. In docking the refined pose's
   /// heading tail was worse (warehouse_aisle, p99 before the code check 4.7 -> 5.5 mrad).

@@ -398,6 +398,12 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
           continue;
         }
         if (h.leg_chi2 < best->leg_chi2) std::swap(h, *best);
+        Detection& winner = best->detection;
+        const double margin = h.leg_chi2 - best->leg_chi2;
+        if (!winner.runner_up_model || margin < winner.runner_up_chi2_margin) {
+          winner.runner_up_model = h.detection.model;
+          winner.runner_up_chi2_margin = margin;
+        }
         h.record.verdict = Verdict::kModel;  // the same legs fit another model better
       }
       Count(h.record.verdict, stats.rejected);

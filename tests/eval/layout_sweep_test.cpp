@@ -17,6 +17,7 @@
 // are met. CI runs the sweep and checks that it scores every class.
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -157,6 +158,39 @@ TEST(LayoutSweepTest, WithoutAPresetTheWholeScanIsSearched) {
     right_first += without[i].outcome == SceneOutcome::kRightFirst;
   }
   EXPECT_GT(right_first, 0);
+}
+
+// Model confusions are counted where the first detection stands on the target under another
+// model; flagged when the target's model was its runner-up within the margin. Hand-made results.
+TEST(LayoutSweepTest, ModelConfusionsAndTheirRunnerUpMargin) {
+  const LayoutSweepConfig config;
+  auto scene = [](SceneOutcome outcome, const std::string& first_model, double offset_m,
+                  std::optional<std::string> runner_up, double margin) {
+    LayoutSceneResult r;
+    r.outcome = outcome;
+    r.target_model = "a";
+    r.T_world_target = geometry::Pose2(1.0, 2.0, 0.3);
+    FirstDetection f;
+    f.model = first_model;
+    f.T_world_shelf = geometry::Pose2(1.0 + offset_m, 2.0, 0.3);
+    f.runner_up_model = std::move(runner_up);
+    f.runner_up_chi2_margin = margin;
+    r.first = f;
+    return r;
+  };
+  const std::vector<LayoutSceneResult> scenes = {
+      scene(SceneOutcome::kWrongFirst, "b", 0.01, "a", 1.0),  // confusion, flagged
+      scene(SceneOutcome::kWrongFirst, "b", 0.01, "a", 9.0),  // confusion, sure of the wrong one
+      scene(SceneOutcome::kWrongFirst, "b", 0.01, "c", 1.0),  // confusion, runner-up not the target
+      scene(SceneOutcome::kWrongFirst, "b", 0.50, "a", 1.0),  // a neighbour, no confusion
+      scene(SceneOutcome::kRightFirst, "a", 0.01, "b", 2.0),  // right, unsure
+      scene(SceneOutcome::kRightFirst, "a", 0.01, "b", 6.0),  // right, sure
+      scene(SceneOutcome::kRightFirst, "a", 0.01, std::nullopt, 0.0)};
+  const ModelConfusionSummary s = SummariseModelConfusions(scenes, config, 4.0);
+  EXPECT_EQ(s.confusions, 3);
+  EXPECT_EQ(s.confusions_flagged, 1);
+  EXPECT_EQ(s.right_first, 3);
+  EXPECT_EQ(s.right_first_flagged, 1);
 }
 
 }  // namespace

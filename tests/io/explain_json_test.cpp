@@ -124,5 +124,18 @@ TEST(DetectionJson, DetectionsCarryTheFitsPose) {
   EXPECT_DOUBLE_EQ(j["fit"]["yaw"].get<double>(), d.T_lidar_shelf_fit->yaw);
 }
 
+// The runner-up model is written only when there is one, with its chi-square margin.
+TEST(DetectionJson, RunnerUpOnlyWhenAnotherModelFitted) {
+  perception::Detection d;
+  d.model = "t1-rect-1080x856";
+  EXPECT_FALSE(DetectionToJson(d).contains("runner_up"));
+  d.runner_up_model = "t1-rect-1075x883";
+  d.runner_up_chi2_margin = 2.5;
+  const nlohmann::json j = DetectionToJson(d);
+  ASSERT_TRUE(j.contains("runner_up")) << j.dump();
+  EXPECT_EQ(j["runner_up"]["model"].get<std::string>(), "t1-rect-1075x883");
+  EXPECT_DOUBLE_EQ(j["runner_up"]["chi2_margin"].get<double>(), 2.5);
+}
+
 }  // namespace
 }  // namespace shelfdock::io

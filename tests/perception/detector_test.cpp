@@ -133,6 +133,55 @@ TEST(DetectorTest, OneLegHiddenGivesAThreeLegDetection) {
   EXPECT_LT(std::abs(geometry::AngleDiff(d.T_lidar_shelf.yaw, truth.yaw)), kYawTol);
 }
 
+// 1075 x 883 and 1080 x 856 differ by 5 mm in length and 27 mm in width: legs near both pass
+// Eq. 2 for both, the legs' chi-square picks one, and the detection names the other as runner-up
+// with the chi-square margin. A shelf measuring halfway between them (1.5 m out, 10 mm noise,
+// five seeds) leaves a smaller margin than a true 1080 x 856 in the same scan: the margin says
+// how clearly the returns tell the two apart. The round-legged 900 x 810 has no close model and
+// no runner-up.
+TEST(DetectorTest, CloseModelsNameTheRunnerUpAndItsMargin) {
+  const auto models = PaperModels();
+  const Detector detector(models);
+  auto detect = [&](const geometry::ShelfModel& model, std::uint64_t seed) {
+    const geometry::Pose2 truth = PlaceShelf(model, 1.5, 0.2, 0.3);
+    sim::World world;
+    testing::AddRoom(world);
+    world.AddShelf(1, model, truth);
+    const DetectionResult r = detector.Detect(SimScan(world, {}, seed));
+    EXPECT_EQ(r.detections.size(), 1u) << model.name;
+    if (r.detections.empty()) return Detection{};
+    EXPECT_LT(geometry::Distance(r.detections[0].T_lidar_shelf, truth), kCentreTol);
+    return r.detections[0];
+  };
+  auto is_close_model = [&](const std::string& name) {
+    return name == models[1].name || name == models[3].name;
+  };
+  geometry::ShelfModel halfway = models[1];
+  halfway.name = "halfway";
+  halfway.length_m = 0.5 * (models[1].length_m + models[3].length_m);
+  halfway.width_m = 0.5 * (models[1].width_m + models[3].width_m);
+  int compared = 0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const Detection between = detect(halfway, seed);
+    const Detection exact = detect(models[3], seed);
+    ASSERT_TRUE(between.runner_up_model.has_value()) << seed;
+    EXPECT_TRUE(is_close_model(between.model)) << between.model;
+    EXPECT_TRUE(is_close_model(*between.runner_up_model)) << *between.runner_up_model;
+    EXPECT_NE(*between.runner_up_model, between.model);
+    EXPECT_GE(between.runner_up_chi2_margin, 0.0);
+    EXPECT_EQ(exact.model, models[3].name) << seed;
+    if (exact.runner_up_model) {
+      EXPECT_EQ(*exact.runner_up_model, models[1].name);
+      EXPECT_LT(between.runner_up_chi2_margin, exact.runner_up_chi2_margin) << seed;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 3);  // the others: 1075 x 883 already beyond lambda_m on the centres
+  const Detection round = detect(models[0], 1);
+  EXPECT_EQ(round.model, models[0].name);
+  EXPECT_FALSE(round.runner_up_model.has_value());
+}
+
 // Docking report (b): driving in, a front and a back leg line up as seen from the LiDAR and the
 // back one is partly or wholly hidden. The shelf must stay detected (3 or 4 legs) throughout.
 // The LiDAR looks along the shelf's left side from 1.5-3 m before the front leg, offset
