@@ -164,28 +164,29 @@ TEST(LayoutSweepTest, WithoutAPresetTheWholeScanIsSearched) {
 // model; flagged when the target's model was its runner-up within the margin. Hand-made results.
 TEST(LayoutSweepTest, ModelConfusionsAndTheirRunnerUpMargin) {
   const LayoutSweepConfig config;
-  auto scene = [](SceneOutcome outcome, const std::string& first_model, double offset_m,
-                  std::optional<std::string> runner_up, double margin) {
+  const std::string a = "t1-rect-1075x883", b = "t1-rect-1080x856", c = "t1-rect-1250x1250";
+  auto scene = [&](SceneOutcome outcome, const std::string& first_model, double offset_m,
+                   const std::optional<std::string>& runner_up, double margin) {
     LayoutSceneResult r;
     r.outcome = outcome;
-    r.target_model = "a";
+    r.target_model = a;
     r.T_world_target = geometry::Pose2(1.0, 2.0, 0.3);
     FirstDetection f;
     f.model = first_model;
     f.T_world_shelf = geometry::Pose2(1.0 + offset_m, 2.0, 0.3);
-    f.runner_up_model = std::move(runner_up);
+    f.runner_up_model = runner_up;
     f.runner_up_chi2_margin = margin;
     r.first = f;
     return r;
   };
   const std::vector<LayoutSceneResult> scenes = {
-      scene(SceneOutcome::kWrongFirst, "b", 0.01, "a", 1.0),  // confusion, flagged
-      scene(SceneOutcome::kWrongFirst, "b", 0.01, "a", 9.0),  // confusion, sure of the wrong one
-      scene(SceneOutcome::kWrongFirst, "b", 0.01, "c", 1.0),  // confusion, runner-up not the target
-      scene(SceneOutcome::kWrongFirst, "b", 0.50, "a", 1.0),  // a neighbour, no confusion
-      scene(SceneOutcome::kRightFirst, "a", 0.01, "b", 2.0),  // right, unsure
-      scene(SceneOutcome::kRightFirst, "a", 0.01, "b", 6.0),  // right, sure
-      scene(SceneOutcome::kRightFirst, "a", 0.01, std::nullopt, 0.0)};
+      scene(SceneOutcome::kWrongFirst, b, 0.01, a, 1.0),  // confusion, flagged
+      scene(SceneOutcome::kWrongFirst, b, 0.01, a, 9.0),  // confusion, sure of the wrong one
+      scene(SceneOutcome::kWrongFirst, b, 0.01, c, 1.0),  // confusion, runner-up not the target
+      scene(SceneOutcome::kWrongFirst, b, 0.50, a, 1.0),  // a neighbour, no confusion
+      scene(SceneOutcome::kRightFirst, a, 0.01, b, 2.0),  // right, unsure
+      scene(SceneOutcome::kRightFirst, a, 0.01, b, 6.0),  // right, sure
+      scene(SceneOutcome::kRightFirst, a, 0.01, std::nullopt, 0.0)};
   const ModelConfusionSummary s = SummariseModelConfusions(scenes, config, 4.0);
   EXPECT_EQ(s.confusions, 3);
   EXPECT_EQ(s.confusions_flagged, 1);
