@@ -228,7 +228,8 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   // outside the field of view (the sensor under a shelf) is excused. With the shelf where the
   // preset says, the map vouches for it (`vouched`, above).
   if (!vouched && set.count == 3 &&
-      (ev.legs_hidden_by_other > 0 || ev.legs_unobserved_in_view > 0)) {
+      (ev.legs_hidden_by_other > 0 || ev.legs_unobserved_in_view > 0 ||
+       ev.legs_in_large_object > 0)) {
     rec.verdict = Verdict::kHiddenLegNoPreset;
     return h;
   }

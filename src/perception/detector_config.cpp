@@ -60,6 +60,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
 
   const auto& e = c.evidence;
   k.Check(e.present_margin_m > 0.0, "evidence.present_margin_m", "> 0");
+  k.Check(e.max_present_object_m >= 0.0, "evidence.max_present_object_m", ">= 0");
   k.Check(e.through_margin_m > 0.0, "evidence.through_margin_m", "> 0");
   k.Check(e.min_through_beams >= 1, "evidence.min_through_beams", ">= 1");
   k.Check(e.leg_position_tolerance_m >= 0.0, "evidence.leg_position_tolerance_m", ">= 0");

@@ -96,9 +96,13 @@ struct ShelfFitConfig {
 /// What the scan says about each hypothesis (legs seen, hidden or seen through; free space
 /// inside the footprint; leg sizes) and how that makes its confidence (see ShelfConfidence).
 struct EvidenceConfig {
-  double present_margin_m = 0.08;  ///< [m] a return this close to a leg's range: it is there
-  double through_margin_m = 0.15;  ///< [m] returns this far beyond a leg: the beam went through
-  int min_through_beams = 2;       ///< [-] beams through a leg that prove it absent
+  double present_margin_m = 0.08;     ///< [m] a return this close to a leg's range: it is there
+  double max_present_object_m = 0.4;  ///< [m] such returns in a wider cluster: an object stands
+                                      ///< there, not a leg (with at most a person's leg beside
+                                      ///< it); a 3-leg shelf nothing vouches for is then not
+                                      ///< returned; 0: off
+  double through_margin_m = 0.15;     ///< [m] returns this far beyond a leg: the beam went through
+  int min_through_beams = 2;          ///< [-] beams through a leg that prove it absent
   double leg_position_tolerance_m = 0.005;  ///< [m] error of a predicted leg position: only
                                             ///< beams this far inside its edge prove absence
   double interior_margin_m = 0.06;        ///< [m] shrink of the footprint for the free-space check

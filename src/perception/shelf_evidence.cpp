@@ -21,6 +21,7 @@ int SpanOfPoint(const std::vector<ClusterSpan>& spans, std::size_t i) {
 struct LegLook {
   LegView view = LegView::kUnobserved;
   std::vector<int> occluder_spans;  // clusters in front of the leg
+  double present_extent_m = 0.0;    // kPresent: the widest cluster holding returns at its range
   // The leg's bearing lies inside the scan's field of view (between its first and last return).
   bool in_view = false;
 };
@@ -64,6 +65,11 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
     if (off <= narrow) ++narrow_returns;
     if (std::abs(q.range - range) <= config.present_margin_m) {
       ++present;
+      const int span = SpanOfPoint(pre.spans, i);
+      if (span >= 0) {
+        look.present_extent_m =
+            std::max(look.present_extent_m, pre.spans[static_cast<std::size_t>(span)].extent_m);
+      }
     } else if (q.range < range) {
       look.occluder_spans.push_back(SpanOfPoint(pre.spans, i));
     } else if (q.range > range + config.through_margin_m && off <= narrow) {
@@ -207,6 +213,10 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     LegLook look = LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, config);
     ev.legs[k] = look.view;
     if (look.view == LegView::kUnobserved && look.in_view) ++ev.legs_unobserved_in_view;
+    if (look.view == LegView::kPresent && config.max_present_object_m > 0.0 &&
+        look.present_extent_m > config.max_present_object_m) {
+      ++ev.legs_in_large_object;
+    }
     if (look.view == LegView::kOccluded) {
       if (std::any_of(look.occluder_spans.begin(), look.occluder_spans.end(),
                       [&](int span) { return !listed(own_spans, span); })) {

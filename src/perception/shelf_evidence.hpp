@@ -33,6 +33,9 @@ struct ShelfEvidence {
   /// Of the unobserved legs, those whose bearing lies inside the scan's field of view (between
   /// its first and last return): beams looked there and none came back near the leg.
   int legs_unobserved_in_view = 0;
+  /// Of the kPresent legs, those whose returns belong to a cluster wider than
+  /// EvidenceConfig::max_present_object_m: a box, a wall or a rack stands where the leg should.
+  int legs_in_large_object = 0;
   int interior_points = 0;       ///< points inside the footprint shrunk by interior_margin_m,
                                  ///< not counting the occluders that hide one of its legs
   int interior_leg_points = 0;   ///< of interior_points, those of foreign legs

@@ -129,6 +129,48 @@ TEST(ShelfEvidenceTest, WithoutAPresetAFourthCornerBehindSomethingElseVouchesFor
   EXPECT_EQ(rs.stats.rejected.hidden_leg_no_preset, 0);
 }
 
+// Three posts and, where the fourth leg should stand, the face of a 0.6 m box (a crate, a rack
+// upright with its panel): returns at the leg's range, but of an object far wider than a leg.
+// Without a preset that vouches for nothing (hidden_leg_no_preset; with the rule off,
+// max_present_object_m 0, the three posts are returned). A real shelf whose fourth leg has a
+// person's leg touching it (one cluster, too wide for a leg candidate) is still returned
+// without a preset: that cluster is narrower than max_present_object_m (0.4 m).
+TEST(ShelfEvidenceTest, WithoutAPresetABoxWhereTheFourthLegShouldBeVouchesForNothing) {
+  const auto models = PaperModels();
+  const geometry::Pose2 T_shelf(2.2, 0.1, 0.3);
+  sim::World world = ThreeCornerPosts(T_shelf);
+  const Eigen::Vector2d corner = T_shelf * models[3].LegCentres()[kEmptyCorner];
+  const Eigen::Vector2d centre = corner + 0.15 * corner.normalized();
+  const double facing = std::atan2(corner.y(), corner.x());
+  world.AddBox({geometry::Pose2(centre.x(), centre.y(), facing), 0.3, 0.6});
+  const auto scan = SimScan(world, {}, 3);
+  const DetectionResult r = Detector(models).Detect(scan);
+  EXPECT_TRUE(r.detections.empty());
+  EXPECT_GE(r.stats.rejected.hidden_leg_no_preset, 1);
+  DetectorConfig off;
+  off.evidence.max_present_object_m = 0.0;
+  const DetectionResult without_rule = Detector(models, off).Detect(scan);
+  ASSERT_EQ(without_rule.detections.size(), 1u);
+  EXPECT_LT(geometry::Distance(without_rule.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
+
+  sim::World shelf_and_person;
+  testing::AddRoom(shelf_and_person);
+  shelf_and_person.AddShelf(1, models[3], T_shelf);
+  shelf_and_person.AddWall({{4.5, -3.0}, {4.5, 3.0}});
+  const Eigen::Vector2d across(-corner.normalized().y(), corner.normalized().x());
+  shelf_and_person.AddRoundPost(corner + (0.02 + 0.06 + 0.005) * across, 0.06);
+  const DetectionResult rp = Detector(models).Detect(SimScan(shelf_and_person, {}, 3));
+  ASSERT_EQ(rp.detections.size(), 1u);
+  EXPECT_EQ(rp.detections[0].model, models[3].name);
+  EXPECT_LT(geometry::Distance(rp.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
+  EXPECT_EQ(rp.detections[0].legs_used, 3);     // the merged leg is no candidate ...
+  EXPECT_EQ(rp.detections[0].legs_visible, 4);  // ... but its returns are at the corner
+  // With the bound at a bare leg's size, that shelf is lost too: the bound is what keeps it.
+  DetectorConfig tight;
+  tight.evidence.max_present_object_m = 0.05;
+  EXPECT_TRUE(Detector(models, tight).Detect(SimScan(shelf_and_person, {}, 3)).detections.empty());
+}
+
 TEST(ShelfEvidenceTest, APresetVouchesForAHiddenFourthCornerOnlyWithinTheMapsError) {
   // The same three posts and box. A preset 0.1 m / 0.05 rad off (inside the map's error, 0.25 m
   // and 0.15 rad) vouches for the hidden fourth leg; one 0.35 m off, inside the 0.5 m preset gate
