@@ -119,13 +119,15 @@ int RunEvalLayouts(const EvalLayoutsOptions& opt) {
        io::LayoutTableLines(rows, config, layout.noise_sigma_m, layout.high_noise_sigma_m, "")) {
     std::cout << line << "\n";
   }
+  for (const auto& line : io::LayoutLegendLines(config, "")) std::cout << line << "\n";
   // With more than one sensor, the same by sensor (every class together): which one the misses
   // come from.
   const auto lidar_rows = eval::SummariseLayoutsByLidar(results, config);
   if (lidar_rows.size() > 1) {
-    const auto lines = io::LayoutTableLines(lidar_rows, config, layout.noise_sigma_m,
-                                            layout.high_noise_sigma_m, "", "lidar");
-    for (std::size_t i = 0; i < lidar_rows.size() + 1; ++i) std::cout << lines[i] << "\n";
+    for (const auto& line : io::LayoutTableLines(lidar_rows, config, layout.noise_sigma_m,
+                                                 layout.high_noise_sigma_m, "", "lidar")) {
+      std::cout << line << "\n";
+    }
   }
   // Close models (1075x883 against 1080x856) told apart by a few millimetres of leg positions:
   // how many confusions the runner-up margin flags, and at what cost in right shelves flagged.

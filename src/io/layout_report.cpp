@@ -152,6 +152,12 @@ std::vector<std::string> LayoutTableLines(const std::vector<eval::LayoutSummary>
   for (const auto& r : rows) {
     lines.push_back(prefix + RowLine(r, low_noise_sigma_m, high_noise_sigma_m));
   }
+  return lines;
+}
+
+std::vector<std::string> LayoutLegendLines(const eval::LayoutSweepConfig& config,
+                                           const std::string& prefix) {
+  std::vector<std::string> lines;
   lines.push_back(prefix + Format("find: target scenes with >= %d legs in line of sight; right: "
                                   "the target first (its model, centre within %.0f mm); missed / "
                                   "wrong: findable, nothing / something else first;",

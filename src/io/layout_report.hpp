@@ -25,14 +25,17 @@
 
 namespace shelfdock::io {
 
-/// The table: a header, one line per summary row and a legend, each line starting with
-/// `prefix`. Accuracy columns for the two noise levels given (p50/p95 of the right-first
-/// findable scenes within the sweep's standoff limit). `first_column` heads the rows' names.
+/// The table: a header and one line per summary row, each line starting with `prefix`. Accuracy
+/// columns for the two noise levels given (p50/p95 of the right-first findable scenes within the
+/// sweep's standoff limit). `first_column` heads the rows' names. LayoutLegendLines explains it.
 std::vector<std::string> LayoutTableLines(const std::vector<eval::LayoutSummary>& rows,
                                           const eval::LayoutSweepConfig& config,
                                           double low_noise_sigma_m, double high_noise_sigma_m,
                                           const std::string& prefix,
                                           const std::string& first_column = "class");
+/// What the table's columns mean (thresholds from `config`), each line starting with `prefix`.
+std::vector<std::string> LayoutLegendLines(const eval::LayoutSweepConfig& config,
+                                           const std::string& prefix);
 
 /// One line for a failing scene: class, seed, sensor, what happened, truth and first detection.
 std::string LayoutFailureLine(const eval::LayoutSceneResult& result);

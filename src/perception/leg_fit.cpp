@@ -11,6 +11,7 @@
 
 #include "geometry/angle.hpp"
 #include "perception/leg_ray_residual.hpp"
+#include "perception/leg_silhouette.hpp"
 
 namespace shelfdock::perception {
 namespace {
@@ -66,33 +67,11 @@ struct LegRayCost {
     return T(0.5) * (lo + hi);
   }
 
-  // Bearings of the predicted silhouette's two outline tangents relative to the measured
-  // centre (a circle's tangents; a box's extreme corners).
+  // Bearings of the predicted silhouette's outline relative to the measured centre.
   template <typename T>
   void SilhouetteBearings(const T* c, T& lo, T& hi) const {
-    using std::atan2;
-    auto bearing = [&](const T& x, const T& y) {
-      return atan2(T(mid_cos) * y - T(mid_sin) * x, T(mid_cos) * x + T(mid_sin) * y);
-    };
-    if (round) {
-      using std::asin;
-      using std::sqrt;
-      const T b = bearing(c[0], c[1]);
-      const T d = sqrt(c[0] * c[0] + c[1] * c[1]);
-      const T half = d > T(radius) ? asin(T(radius) / d) : T(0.5 * 3.141592653589793);
-      lo = b - half;
-      hi = b + half;
-      return;
-    }
-    lo = T(1e9);
-    hi = T(-1e9);
-    for (const double sx : {-half_x, half_x}) {
-      for (const double sy : {-half_y, half_y}) {
-        const T b = bearing(c[0] + T(cos_a * sx - sin_a * sy), c[1] + T(sin_a * sx + cos_a * sy));
-        if (b < lo) lo = b;
-        if (b > hi) hi = b;
-      }
-    }
+    perception::SilhouetteBearings(c, round, radius, T(cos_a), T(sin_a), half_x, half_y, mid_cos,
+                                   mid_sin, lo, hi);
   }
 };
 

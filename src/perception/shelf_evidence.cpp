@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "geometry/angle.hpp"
+#include "perception/leg_silhouette.hpp"
 
 namespace shelfdock::perception {
 namespace {
@@ -140,22 +141,11 @@ double ObjectPointWeight(const ShelfEvidence& ev, const EvidenceConfig& config) 
 
 double LegSilhouetteAngle(const geometry::LegModel& leg, double leg_yaw,
                           const Eigen::Vector2d& centre) {
-  const double d = centre.norm();
-  if (leg.shape == geometry::LegShape::kCircle) {
-    return d > leg.Radius() ? 2.0 * std::asin(leg.Radius() / d) : std::numbers::pi;
-  }
   const double bearing = std::atan2(centre.y(), centre.x());
-  const Eigen::Vector2d e1(std::cos(leg_yaw), std::sin(leg_yaw));
-  const Eigen::Vector2d e2(-e1.y(), e1.x());
   double lo = 0.0, hi = 0.0;
-  for (const double sx : {-0.5 * leg.length_m, 0.5 * leg.length_m}) {
-    for (const double sy : {-0.5 * leg.width_m, 0.5 * leg.width_m}) {
-      const Eigen::Vector2d corner = centre + sx * e1 + sy * e2;
-      const double b = geometry::AngleDiff(std::atan2(corner.y(), corner.x()), bearing);
-      lo = std::min(lo, b);
-      hi = std::max(hi, b);
-    }
-  }
+  SilhouetteBearings(centre.data(), leg.shape == geometry::LegShape::kCircle, leg.Radius(),
+                     std::cos(leg_yaw), std::sin(leg_yaw), 0.5 * leg.length_m, 0.5 * leg.width_m,
+                     std::cos(bearing), std::sin(bearing), lo, hi);
   return hi - lo;
 }
 

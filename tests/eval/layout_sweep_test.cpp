@@ -71,6 +71,9 @@ TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
                                                layout.high_noise_sigma_m, "[ layouts ] ")) {
     std::printf("%s\n", line.c_str());
   }
+  for (const auto& line : io::LayoutLegendLines(config, "[ layouts ] ")) {
+    std::printf("%s\n", line.c_str());
+  }
   std::printf("[ layouts ] %zu scenes in %.1f s\n", results.size(), seconds);
   for (const auto& r : results) {
     if (r.Failed()) std::printf("[ layouts ] FAIL %s\n", io::LayoutFailureLine(r).c_str());
