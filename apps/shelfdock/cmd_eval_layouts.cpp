@@ -116,7 +116,7 @@ int RunEvalLayouts(const EvalLayoutsOptions& opt) {
   const auto rows = eval::SummariseLayoutsByClass(results, config);
 
   for (const auto& line :
-       io::LayoutTableLines(rows, config, layout.noise_sigma_m, layout.high_noise_sigma_m, "")) {
+       io::LayoutTableLines(rows, layout.noise_sigma_m, layout.high_noise_sigma_m, "")) {
     std::cout << line << "\n";
   }
   for (const auto& line : io::LayoutLegendLines(config, "")) std::cout << line << "\n";
@@ -124,7 +124,7 @@ int RunEvalLayouts(const EvalLayoutsOptions& opt) {
   // come from.
   const auto lidar_rows = eval::SummariseLayoutsByLidar(results, config);
   if (lidar_rows.size() > 1) {
-    for (const auto& line : io::LayoutTableLines(lidar_rows, config, layout.noise_sigma_m,
+    for (const auto& line : io::LayoutTableLines(lidar_rows, layout.noise_sigma_m,
                                                  layout.high_noise_sigma_m, "", "lidar")) {
       std::cout << line << "\n";
     }

@@ -137,7 +137,6 @@ std::string PresetArgument(const geometry::Pose2& T) {
 }  // namespace
 
 std::vector<std::string> LayoutTableLines(const std::vector<eval::LayoutSummary>& rows,
-                                          const eval::LayoutSweepConfig& config,
                                           double low_noise_sigma_m, double high_noise_sigma_m,
                                           const std::string& prefix,
                                           const std::string& first_column) {

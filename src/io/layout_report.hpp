@@ -29,7 +29,6 @@ namespace shelfdock::io {
 /// columns for the two noise levels given (p50/p95 of the right-first findable scenes within the
 /// sweep's standoff limit). `first_column` heads the rows' names. LayoutLegendLines explains it.
 std::vector<std::string> LayoutTableLines(const std::vector<eval::LayoutSummary>& rows,
-                                          const eval::LayoutSweepConfig& config,
                                           double low_noise_sigma_m, double high_noise_sigma_m,
                                           const std::string& prefix,
                                           const std::string& first_column = "class");

@@ -67,7 +67,7 @@ TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto rows = SummariseLayoutsByClass(results, config);
-  for (const auto& line : io::LayoutTableLines(rows, config, layout.noise_sigma_m,
+  for (const auto& line : io::LayoutTableLines(rows, layout.noise_sigma_m,
                                                layout.high_noise_sigma_m, "[ layouts ] ")) {
     std::printf("%s\n", line.c_str());
   }
