@@ -133,18 +133,17 @@ std::vector<LayoutSummary> SummariseLayoutsByLidar(const std::vector<LayoutScene
 ModelConfusionSummary SummariseModelConfusions(const std::vector<LayoutSceneResult>& scenes,
                                                const LayoutSweepConfig& config, double margin) {
   ModelConfusionSummary out;
-  out.margin = margin;
   for (const LayoutSceneResult& r : scenes) {
     if (!r.first) continue;
     const FirstDetection& f = *r.first;
-    const bool unsure = f.runner_up_model && f.runner_up_chi2_margin < margin;
+    const bool unsure = f.runner_up && f.runner_up->chi2_margin < margin;
     if (r.outcome == SceneOutcome::kRightFirst) {
       ++out.right_first;
       if (unsure) ++out.right_first_flagged;
     } else if (r.outcome == SceneOutcome::kWrongFirst && f.model != r.target_model &&
                geometry::Distance(f.T_world_shelf, r.T_world_target) <= config.right_radius_m) {
       ++out.confusions;
-      if (unsure && *f.runner_up_model == r.target_model) ++out.confusions_flagged;
+      if (unsure && f.runner_up->model == r.target_model) ++out.confusions_flagged;
     }
   }
   return out;

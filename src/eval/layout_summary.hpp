@@ -62,9 +62,8 @@ std::vector<LayoutSummary> SummariseLayoutsByLidar(const std::vector<LayoutScene
 
 /// How close models were told apart: scenes whose first detection stands on the target (centre
 /// within right_radius_m) under another model, and how many of them and of the right-first scenes
-/// carried a runner-up model with a chi-square margin under `margin` (Detection::runner_up_*).
+/// carried a runner-up model with a chi-square margin under `margin` (Detection::runner_up).
 struct ModelConfusionSummary {
-  double margin = 0.0;          ///< [-] the chi-square margin counted as "unsure"
   int confusions = 0;           ///< wrong first: the target's place, another model
   int confusions_flagged = 0;   ///< of those, the target's model runner-up within `margin`
   int right_first = 0;          ///< right-first scenes

@@ -32,8 +32,7 @@ FirstDetection MakeFirst(const sim::LayoutScene& scene, const perception::Detect
   f.legs_occluded = d.legs_occluded;
   f.interior_points = d.interior_points;
   f.leg_width_bias_m = d.leg_width_bias_m;
-  f.runner_up_model = d.runner_up_model;
-  f.runner_up_chi2_margin = d.runner_up_chi2_margin;
+  f.runner_up = d.runner_up;
   std::tie(f.nearest_shelf_id, f.nearest_shelf_m) =
       NearestShelf(scene.world, f.T_world_shelf.translation());
   return f;

@@ -57,10 +57,9 @@ struct FirstDetection {
   double confidence = 0.0;  ///< [0, 1] the detector's
   int legs_occluded = 0;    ///< model legs hidden
   int interior_points = 0;
-  double leg_width_bias_m = 0.0;               ///< points in the footprint
-  std::optional<std::string> runner_up_model;  ///< Detection::runner_up_model
-  double runner_up_chi2_margin = 0.0;          ///< Detection::runner_up_chi2_margin
-  int nearest_shelf_id = -1;                   ///< -1: no shelf at all
+  double leg_width_bias_m = 0.0;                                     ///< points in the footprint
+  std::optional<perception::RunnerUp> runner_up;                     ///< Detection::runner_up
+  int nearest_shelf_id = -1;                                         ///< -1: no shelf at all
   double nearest_shelf_m = std::numeric_limits<double>::infinity();  ///< [m] centre to centre
 };
 

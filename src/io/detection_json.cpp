@@ -12,6 +12,10 @@ nlohmann::json PoseJson(const geometry::Pose2& T) {
 
 }  // namespace
 
+nlohmann::json RunnerUpToJson(const perception::RunnerUp& r) {
+  return {{"model", r.model}, {"chi2_margin", r.chi2_margin}};
+}
+
 nlohmann::json DetectionToJson(const perception::Detection& d,
                                const std::optional<geometry::Pose2>& T_base_lidar,
                                const std::optional<geometry::Pose2>& T_map_base) {
@@ -38,9 +42,7 @@ nlohmann::json DetectionToJson(const perception::Detection& d,
                       {"interior_points", d.interior_points},
                       {"leg_width_error", d.leg_width_error_m},
                       {"leg_width_bias", d.leg_width_bias_m}};
-  if (d.runner_up_model) {
-    j["runner_up"] = {{"model", *d.runner_up_model}, {"chi2_margin", d.runner_up_chi2_margin}};
-  }
+  if (d.runner_up) j["runner_up"] = RunnerUpToJson(*d.runner_up);
   if (T_base_lidar) j["base"] = PoseJson(perception::ShelfInBase(d, *T_base_lidar));
   if (T_map_base) {
     j["map"] =

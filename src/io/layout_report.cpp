@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/detection_json.hpp"
 #include "io/input_error.hpp"
 #include "io/scan_json.hpp"
 
@@ -97,10 +98,7 @@ nlohmann::json FirstJson(const std::optional<eval::FirstDetection>& first,
   j["legs_occluded"] = first->legs_occluded;
   j["interior_points"] = first->interior_points;
   j["leg_width_bias"] = first->leg_width_bias_m;
-  if (first->runner_up_model) {
-    j["runner_up"] = {{"model", *first->runner_up_model},
-                      {"chi2_margin", first->runner_up_chi2_margin}};
-  }
+  if (first->runner_up) j["runner_up"] = RunnerUpToJson(*first->runner_up);
   j["nearest_shelf_id"] = first->nearest_shelf_id;
   j["nearest_shelf_m"] = std::isfinite(first->nearest_shelf_m)
                              ? nlohmann::json(first->nearest_shelf_m)

@@ -10,6 +10,12 @@
 
 namespace shelfdock::perception {
 
+/// The next-best model on a detection's legs (Detection::runner_up).
+struct RunnerUp {
+  std::string model;         ///< its name
+  double chi2_margin = 0.0;  ///< [-] its legs' chi-square minus the returned model's (>= 0)
+};
+
 /// One shelf found in a scan, in the scan's frame (`lidar`).
 struct Detection {
   std::string model;                  ///< name of the matched shelf model
@@ -36,10 +42,9 @@ struct Detection {
   double leg_width_bias_m = 0.0;   ///< [m] mean seen leg width minus the model's silhouette
   /// The next-best model on the same legs, when its hypothesis passed every check too (close
   /// models, e.g. 1075x883 and 1080x856 with 27 mm between their widths), and how much worse
-  /// the legs fit it: its legs' chi-square minus this model's (>= 0). A margin of a few units
-  /// means the returns barely tell the two models apart; empty: no other model fitted.
-  std::optional<std::string> runner_up_model;
-  double runner_up_chi2_margin = 0.0;  ///< [-]
+  /// the legs fit it. A margin of a few units means the returns barely tell the two models
+  /// apart; empty: no other model fitted.
+  std::optional<RunnerUp> runner_up;
 
   /// The pose to fuse with `covariance` in a filter: the fit's. In docking the refined pose's
   /// heading tail was worse (warehouse_aisle, p99 before the code check 4.7 -> 5.5 mrad).

@@ -399,11 +399,10 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
           continue;
         }
         if (h.leg_chi2 < best->leg_chi2) std::swap(h, *best);
-        Detection& winner = best->detection;
+        std::optional<RunnerUp>& runner_up = best->detection.runner_up;
         const double margin = h.leg_chi2 - best->leg_chi2;
-        if (!winner.runner_up_model || margin < winner.runner_up_chi2_margin) {
-          winner.runner_up_model = h.detection.model;
-          winner.runner_up_chi2_margin = margin;
+        if (!runner_up || margin < runner_up->chi2_margin) {
+          runner_up = RunnerUp{h.detection.model, margin};
         }
         h.record.verdict = Verdict::kModel;  // the same legs fit another model better
       }

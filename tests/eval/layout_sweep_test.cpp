@@ -177,8 +177,7 @@ TEST(LayoutSweepTest, ModelConfusionsAndTheirRunnerUpMargin) {
     FirstDetection f;
     f.model = first_model;
     f.T_world_shelf = geometry::Pose2(1.0 + offset_m, 2.0, 0.3);
-    f.runner_up_model = runner_up;
-    f.runner_up_chi2_margin = margin;
+    if (runner_up) f.runner_up = perception::RunnerUp{*runner_up, margin};
     r.first = f;
     return r;
   };

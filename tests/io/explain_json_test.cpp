@@ -129,8 +129,7 @@ TEST(DetectionJson, RunnerUpOnlyWhenAnotherModelFitted) {
   perception::Detection d;
   d.model = "t1-rect-1080x856";
   EXPECT_FALSE(DetectionToJson(d).contains("runner_up"));
-  d.runner_up_model = "t1-rect-1075x883";
-  d.runner_up_chi2_margin = 2.5;
+  d.runner_up = perception::RunnerUp{"t1-rect-1075x883", 2.5};
   const nlohmann::json j = DetectionToJson(d);
   ASSERT_TRUE(j.contains("runner_up")) << j.dump();
   EXPECT_EQ(j["runner_up"]["model"].get<std::string>(), "t1-rect-1075x883");

@@ -164,22 +164,22 @@ TEST(DetectorTest, CloseModelsNameTheRunnerUpAndItsMargin) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const Detection between = detect(halfway, seed);
     const Detection exact = detect(models[3], seed);
-    ASSERT_TRUE(between.runner_up_model.has_value()) << seed;
+    ASSERT_TRUE(between.runner_up.has_value()) << seed;
     EXPECT_TRUE(is_close_model(between.model)) << between.model;
-    EXPECT_TRUE(is_close_model(*between.runner_up_model)) << *between.runner_up_model;
-    EXPECT_NE(*between.runner_up_model, between.model);
-    EXPECT_GE(between.runner_up_chi2_margin, 0.0);
+    EXPECT_TRUE(is_close_model(between.runner_up->model)) << between.runner_up->model;
+    EXPECT_NE(between.runner_up->model, between.model);
+    EXPECT_GE(between.runner_up->chi2_margin, 0.0);
     EXPECT_EQ(exact.model, models[3].name) << seed;
-    if (exact.runner_up_model) {
-      EXPECT_EQ(*exact.runner_up_model, models[1].name);
-      EXPECT_LT(between.runner_up_chi2_margin, exact.runner_up_chi2_margin) << seed;
+    if (exact.runner_up) {
+      EXPECT_EQ(exact.runner_up->model, models[1].name);
+      EXPECT_LT(between.runner_up->chi2_margin, exact.runner_up->chi2_margin) << seed;
       ++compared;
     }
   }
   EXPECT_GE(compared, 3);  // the others: 1075 x 883 already beyond lambda_m on the centres
   const Detection round = detect(models[0], 1);
   EXPECT_EQ(round.model, models[0].name);
-  EXPECT_FALSE(round.runner_up_model.has_value());
+  EXPECT_FALSE(round.runner_up.has_value());
 }
 
 // Docking report (b): driving in, a front and a back leg line up as seen from the LiDAR and the
