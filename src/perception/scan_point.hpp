@@ -44,7 +44,12 @@ inline std::optional<std::pair<int, int>> BeamWindow(const std::vector<ScanPoint
   const ScanPoint& a = points.front();
   const ScanPoint& b = points.back();
   const double inc = (b.angle - a.angle) / static_cast<double>(b.beam - a.beam);
-  const double centre = a.beam + geometry::AngleDiff(bearing_rad, a.angle) / inc;
+  // The bearing's offset from the first beam, wrapped about the fan's middle: a fan wider than
+  // pi (270 deg LiDARs) has bearings more than pi from its first beam, which a wrap about the
+  // first beam would put on the wrong side of it.
+  const double middle = a.angle + 0.5 * (b.angle - a.angle);
+  const double offset = (middle - a.angle) + geometry::AngleDiff(bearing_rad, middle);
+  const double centre = a.beam + offset / inc;
   const double half = half_rad / std::abs(inc);
   return std::pair{static_cast<int>(std::ceil(centre - half)),
                    static_cast<int>(std::floor(centre + half))};
