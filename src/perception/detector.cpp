@@ -62,7 +62,7 @@ struct LegFitCache {
 // of a scan.
 struct ScoreInputs {
   const PreprocessOutput& pre;
-  const std::vector<char>& shelf_like_spans;
+  const std::vector<SpanRole>& span_roles;
   double angle_increment_rad;
   const std::optional<geometry::Pose2>& T_lidar_preset;
   const DetectorConfig& config;
@@ -200,8 +200,9 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   }
   std::array<int, 4> corner_candidate{-1, -1, -1, -1};
   for (int i = 0; i < set.count; ++i) corner_candidate[fit->corner_of_leg[i]] = set.legs[i];
-  ShelfEvidence ev = GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre,
-                                    in.shelf_like_spans, in.angle_increment_rad, config.evidence);
+  ShelfEvidence ev =
+      GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre, in.span_roles,
+                     in.angle_increment_rad, vouched, config.evidence);
   ev.confidence = ShelfConfidence(ev, refined_pose.chi2, set.count, config.evidence);
   h.corners_present =
       static_cast<int>(std::count(ev.legs.begin(), ev.legs.end(), LegView::kPresent));
@@ -361,12 +362,20 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   stats.leg_sets = static_cast<int>(sets.size());
 
   LegFitCache cache;
-  std::vector<char> shelf_like_spans(pre.spans.size(), 0);
+  // The legs of shelf-shaped groups, for the free-space check: a span is a whole leg when one
+  // of its candidates in some set has its outline uncut on both sides.
+  std::vector<SpanRole> span_roles(pre.spans.size(), SpanRole::kOther);
   for (const LegSet& set : sets) {
-    for (int i = 0; i < set.count; ++i) shelf_like_spans[pre.candidates[set.legs[i]].span] = 1;
+    for (int i = 0; i < set.count; ++i) {
+      const Cluster& c = pre.candidates[set.legs[i]];
+      if (c.span < 0) continue;
+      SpanRole& role = span_roles[static_cast<std::size_t>(c.span)];
+      if (role == SpanRole::kLeg) continue;
+      role = c.edges.before_cut || c.edges.after_cut ? SpanRole::kPartlyHiddenLeg : SpanRole::kLeg;
+    }
   }
   ScoreInputs inputs{pre,
-                     shelf_like_spans,
+                     span_roles,
                      angle_increment_rad,
                      T_lidar_preset,
                      config_,

@@ -45,18 +45,30 @@ struct ShelfEvidence {
                                  ///< with both outline edges seen (or seen too wide)
   double leg_width_bias_excess_m = 0;  ///< |leg_width_bias_m| beyond its allowance
   double confidence = 0.0;             ///< [0, 1], see ShelfConfidence
+  /// The map vouches for the shelf (GatherEvidence's `vouched`): objects inside weigh less.
+  bool vouched = false;
+};
+
+/// What a cluster of the scan (a PreprocessOutput span) is to the free-space check.
+enum class SpanRole : char {
+  kOther,            ///< a leg of no leg set of the search
+  kLeg,              ///< a leg of some leg set (a shelf-shaped group), its outline whole
+  kPartlyHiddenLeg,  ///< the same, but something nearer hides one side of it (SilhouetteEdges'
+                     ///< cut): it may be the visible sliver of a larger object
 };
 
 /// Gathers the evidence for a shelf at `T_lidar_shelf` of `model` whose model corner k is the
 /// leg candidate `corner_candidate[k]` (index into pre.candidates, -1 when no cluster).
 /// `pre` must come from Preprocess on the same scan (its points are in beam order).
-/// `shelf_like_spans[s]` is true for the clusters that belong to some leg set of the search
-/// (legs of some shelf-shaped group): inside a footprint they are the phantom's signature.
+/// `span_roles[s]` tells which clusters belong to some leg set of the search (legs of some
+/// shelf-shaped group): inside a footprint they are the phantom's signature; spans past its end
+/// count as kOther. `vouched`: the map vouches for a shelf there (a preset within its own error).
 ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              const geometry::ShelfModel& model,
                              const std::array<int, 4>& corner_candidate,
-                             const PreprocessOutput& pre, const std::vector<char>& shelf_like_spans,
-                             double angle_increment_rad, const EvidenceConfig& config);
+                             const PreprocessOutput& pre, const std::vector<SpanRole>& span_roles,
+                             double angle_increment_rad, bool vouched,
+                             const EvidenceConfig& config);
 
 /// Confidence in [0, 1]: the product of
 /// - leg support: (seen + occluded_credit * occluded + unobserved_credit * unobserved) / 4,
