@@ -82,6 +82,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("interior_scale_points", c.interior_scale_points);
   f.Read("foreign_leg_points", c.foreign_leg_points);
   f.Read("object_point_weight", c.object_point_weight);
+  f.Read("object_point_spacing_m", c.object_point_spacing_m);
   f.Read("leg_size_margin_m", c.leg_size_margin_m);
   f.Read("leg_width_slack_m", c.leg_width_slack_m);
   f.Read("leg_width_bias_beams", c.leg_width_bias_beams);

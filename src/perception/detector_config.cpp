@@ -74,6 +74,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.interior_scale_points > 0.0, "evidence.interior_scale_points", "> 0");
   k.Check(e.foreign_leg_points >= 0.0, "evidence.foreign_leg_points", ">= 0");
   k.Check(e.object_point_weight >= 0.0, "evidence.object_point_weight", ">= 0");
+  k.Check(e.object_point_spacing_m >= 0.0, "evidence.object_point_spacing_m", ">= 0");
   k.Check(e.leg_size_margin_m >= 0.0, "evidence.leg_size_margin_m", ">= 0");
   k.Check(e.leg_width_slack_m >= 0.0, "evidence.leg_width_slack_m", ">= 0");
   k.Check(e.leg_width_bias_beams >= 0.0, "evidence.leg_width_bias_beams", ">= 0");

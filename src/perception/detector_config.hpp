@@ -115,6 +115,9 @@ struct EvidenceConfig {
   double interior_scale_points = 4.0;     ///< [-] points inside the footprint that halve it
   double foreign_leg_points = 6.0;        ///< [-] a leg-sized cluster inside counts as this many
   double object_point_weight = 0.25;      ///< [-] weight of an interior point of a larger object
+  double object_point_spacing_m = 0.01;   ///< [m] an object's interior return counts as one point
+                                          ///< per this much beam spacing at most: a near object's
+                                          ///< dense returns count the surface they cover; 0: off
   double leg_size_margin_m = 0.04;        ///< [m] clusters up to the leg's extent plus this are
                                           ///< leg-sized
   double leg_width_slack_m = 0.015;       ///< [m] seen leg widths may differ by one beam plus this

@@ -36,9 +36,12 @@ struct ShelfEvidence {
   /// Of the kPresent legs, those whose returns belong to a cluster wider than
   /// EvidenceConfig::max_present_object_m: a box, a wall or a rack stands where the leg should.
   int legs_in_large_object = 0;
-  int interior_points = 0;       ///< points inside the footprint shrunk by interior_margin_m,
-                                 ///< not counting the occluders that hide one of its legs
-  int interior_leg_points = 0;   ///< of interior_points, those of foreign legs
+  int interior_points = 0;      ///< points inside the footprint shrunk by interior_margin_m,
+                                ///< not counting the occluders that hide one of its legs
+  int interior_leg_points = 0;  ///< of interior_points, those of foreign legs
+  /// The other interior points (objects), each weighted by its beam spacing over
+  /// EvidenceConfig::object_point_spacing_m, at most 1.
+  double interior_object_points = 0.0;
   int foreign_legs_inside = 0;   ///< legs of other leg sets (not its own) standing inside
   double leg_width_error_m = 0;  ///< worst |seen width - model leg's silhouette| over its legs
   double leg_width_bias_m = 0;   ///< mean (seen width - model leg's silhouette) over its legs
@@ -78,9 +81,10 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
 ///   allow), dof = 2 legs - 3 its degrees of freedom and c fit_chi2_three_legs or
 ///   fit_chi2_four_legs;
 /// - free space: 1 / (1 + blocked / interior_scale_points), where blocked counts each interior
-///   point of a foreign leg once, each other interior point object_point_weight times (once
-///   when a leg is missing and nothing hides it), and each foreign leg inside
-///   foreign_leg_points more;
+///   point of a foreign leg once, each other interior point (interior_object_points: near the
+///   sensor less than one each) object_point_weight times (once when a leg is missing, nothing
+///   hides it and no map vouches for the shelf), and each foreign leg inside foreign_leg_points
+///   more;
 /// - leg size: 1 / (1 + (leg_width_error_m / leg_width_scale_m)^2)
 ///             / (1 + (leg_width_bias_excess_m / leg_width_scale_m)^2).
 /// It reads as "how sure the scan makes us that this is a shelf of this model here": 1 is four

@@ -387,8 +387,7 @@ TEST(ShelfEvidenceTest, ConfidenceIsOneForAPerfectShelfAndFallsWithEachFlaw) {
   inside.interior_leg_points = inside.interior_points;
   EXPECT_NEAR(ShelfConfidence(inside, 0.0, 4, config), 0.5, 1e-12);
   ShelfEvidence object = ev;
-  object.interior_points =
-      static_cast<int>(config.interior_scale_points / config.object_point_weight);
+  object.interior_object_points = config.interior_scale_points / config.object_point_weight;
   EXPECT_NEAR(ShelfConfidence(object, 0.0, 4, config), 0.5, 1e-12);
   ShelfEvidence through = ev;
   through.legs_seen = 3;
@@ -516,14 +515,14 @@ TEST(ShelfEvidenceTest, APartlyHiddenSliverInsideAVouchedShelfIsNoForeignLeg) {
   EXPECT_EQ(vouched.interior_points, 3);
 }
 
-// Three legs seen, the fourth unobserved, and a person's legs inside (eight points): without a
-// map they count in full, as they must to tell furniture from a shelf; where the map vouches for
+// Three legs seen, the fourth unobserved, and a person's legs inside (eight points' worth): without
+// a map they count in full, as they must to tell furniture from a shelf; where the map vouches for
 // the shelf they weigh object_point_weight each, as under a shelf with four legs seen.
 TEST(ShelfEvidenceTest, ObjectsUnderAShelfTheMapVouchesForWeighLess) {
   const EvidenceConfig config;
   ShelfEvidence ev;
   ev.legs_seen = 3;
-  ev.interior_points = 8;
+  ev.interior_object_points = 8.0;
   const double alone = ShelfConfidence(ev, 0.0, 3, config);
   ev.vouched = true;
   const double vouched = ShelfConfidence(ev, 0.0, 3, config);
@@ -536,6 +535,45 @@ TEST(ShelfEvidenceTest, ObjectsUnderAShelfTheMapVouchesForWeighLess) {
   ev.vouched = false;
   EXPECT_NEAR(ShelfConfidence(ev, 0.0, 4, config), 1.0 / (1.0 + 2.0 / config.interior_scale_points),
               1e-12);
+}
+
+// An object inside the footprint of a 1250x1250 shelf (a 12 cm arc of 30 returns across the
+// footprint's near part, 0.6 m from the sensor, and the same arc at 2.5 m): its points count the
+// surface they cover, each min(1, beam spacing / object_point_spacing_m), so the near object
+// counts about what it would farther off, not five times as much; with the spacing 0 every
+// return counts 1.
+TEST(ShelfEvidenceTest, AnObjectsPointsCountTheSurfaceTheyCover) {
+  const geometry::ShelfModel model = PaperModels()[2];
+  const double alpha = testing::kWlrAlpha;
+  auto evidence = [&](double range, int returns, double spacing_m) {
+    // The shelf centred on the object, so every return lies inside its footprint.
+    const geometry::Pose2 T_lidar_shelf(range, 0.0, 0.0);
+    PreprocessOutput pre;
+    for (int k = 0; k < returns; ++k) {
+      ScanPoint q;
+      q.angle = (k - 0.5 * (returns - 1)) * alpha;
+      q.range = range;
+      q.p = range * Eigen::Vector2d(std::cos(q.angle), std::sin(q.angle));
+      q.beam = 400 + k;
+      pre.points.push_back(q);
+    }
+    ClusterSpan span;
+    span.end = pre.points.size();
+    for (const ScanPoint& q : pre.points) span.centroid += q.p / static_cast<double>(returns);
+    span.extent_m = (pre.points.back().p - pre.points.front().p).norm();
+    pre.spans.push_back(span);
+    EvidenceConfig config;
+    config.object_point_spacing_m = spacing_m;
+    return GatherEvidence(T_lidar_shelf, model, {-1, -1, -1, -1}, pre, {}, alpha, false, config);
+  };
+  const double spacing = EvidenceConfig{}.object_point_spacing_m;
+  const ShelfEvidence near = evidence(0.6, 30, spacing);
+  EXPECT_EQ(near.interior_points, 30);
+  EXPECT_NEAR(near.interior_object_points, 30 * 0.6 * alpha / spacing, 1e-9);
+  const ShelfEvidence far = evidence(2.5, 8, spacing);  // 2.5 m * alpha > 1 cm: 1 each
+  EXPECT_EQ(far.interior_points, 8);
+  EXPECT_NEAR(far.interior_object_points, 8.0, 1e-12);
+  EXPECT_NEAR(evidence(0.6, 30, 0.0).interior_object_points, 30.0, 1e-12);
 }
 
 }  // namespace
