@@ -129,8 +129,8 @@ double SeenWidth(const ScanPoint& first, const ScanPoint& last, double range_m, 
 // Objects under a shelf are excused in part when four legs vouch for it, when a leg is missing
 // because something hides it (the scene is cluttered there, and the hider may be more than one
 // cluster, like a person's two legs), or when the map says a shelf stands there (a person beside
-// one of three legs seen: eval-layouts --scenes-per-class 1000, seed0 1 / 20001 / 40001 / 5001:
-// +0 / +1 / +2 / +2 right shelves, phantoms and clutter detections unchanged). With a leg missing
+// one of three legs seen: eval-layouts seeds 1 +0, --scenes-per-class 1000 seed0 20001 / 40001 /
+// 5001 +1 / +2 / +2 right shelves, phantoms and clutter detections unchanged). With a leg missing
 // for no visible reason and no map to vouch, the free space is most of what is left to tell a
 // shelf from furniture or posts: it counts in full.
 // object_point_weight 0.1 instead of 0.25 (a person standing at a leg inside the footprint puts
@@ -156,8 +156,8 @@ bool IsForeignLeg(const PreprocessOutput& pre, const ClusterSpan& span, SpanRole
   if (seen_width > leg_extent + range * alpha + config.leg_width_slack_m) return false;
   // Where the map vouches for the shelf, a leg-sized cluster that something nearer partly hides
   // is taken for what it most often is there: the sliver of a person's leg showing beside the
-  // shelf's own leg, not a leg of another shelf (eval-layouts --scenes-per-class 1000, seed0 1 /
-  // 20001 / 40001 / 5001: +2 / +0 / +5 / +6 right shelves, phantoms unchanged; without the map's
+  // shelf's own leg, not a leg of another shelf (eval-layouts seeds 1 +2, --scenes-per-class 1000
+  // seed0 20001 / 40001 / 5001 +0 / +5 / +6 right shelves, phantoms unchanged; without the map's
   // word, 2 -> 5 detections in 1000 clutter scenes).
   return !(vouched && role == SpanRole::kPartlyHiddenLeg);
 }
@@ -293,9 +293,9 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     int inside = 0;
     // An object's points count the surface they cover, not the returns: a person's leg 0.6 m
     // from the sensor returns some 30 points, at 3 m five or six. Each counts as much as its beam
-    // spacing is of object_point_spacing_m, at most 1 (eval-layouts --scenes-per-class 1000,
-    // seed0 1 / 20001 / 40001 / 5001: +2 / +3 / +3 / +7 right shelves, phantoms and clutter
-    // detections with and without a preset unchanged; 0.015 m added a clutter detection).
+    // spacing is of object_point_spacing_m, at most 1 (eval-layouts seeds 1 +2, --scenes-per-class
+    // 1000 seed0 20001 / 40001 / 5001 +3 / +3 / +7 right shelves, phantoms and clutter detections
+    // with and without a preset unchanged; 0.015 m added a clutter detection).
     double surface = 0.0;
     for (std::size_t i = span.begin; i < span.end; ++i) {
       const Eigen::Vector2d p = R * pre.points[i].p + t;
