@@ -196,5 +196,38 @@ TEST(LayoutSweepTest, ModelConfusionsAndTheirRunnerUpMargin) {
   EXPECT_EQ(s.right_first_flagged, 1);
 }
 
+// eval-layouts' mixed_neighbours scene 5570 (TiM571, 10 mm noise): a 1250 x 1250 shelf whose
+// near legs stand 2.8-2.9 m out and whose far legs, 4.1 m out with a wall 0.45 m behind, return
+// only blends of leg and wall (two beams each, 0.1-0.3 m behind the leg) that the search takes for
+// legs at that range, so no leg set fits a model. Both far corners blended on their bearings
+// complete the shelf from its near legs (CompleteLegSets); each of those blends alone would not,
+// as a leg candidate behind one corner may be a neighbour's leg. Returned with all four legs
+// within 2 cm / 15 mrad of the truth.
+TEST(LayoutSceneTest, TwoFarLegsEachSeenOnlyBlendedCompleteTheShelf) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  const sim::LayoutScene scene = sim::GenerateLayoutScene(sim::LayoutClass::kMixedNeighbours, 5570,
+                                                          models, LayoutWithPresets());
+  ASSERT_EQ(scene.lidar_name, "tim571");
+  const auto target = scene.Target();
+  ASSERT_TRUE(target.has_value());
+  ASSERT_EQ(target->model.name, "t1-rect-1250x1250");
+  const geometry::Pose2 T_lidar_shelf = scene.T_world_lidar.inverse() * target->T_world_shelf;
+  const auto preset = scene.PresetInLidar();
+  ASSERT_TRUE(preset.has_value());
+  const perception::DetectionResult r =
+      perception::Detector(models).Detect(sim::SimulateLayoutScan(scene), *preset);
+  EXPECT_EQ(r.stats.leg_sets, 0);
+  EXPECT_GT(r.stats.completed_sets, 0);
+  ASSERT_EQ(r.detections.size(), 1u);
+  const perception::Detection& d = r.detections[0];
+  EXPECT_EQ(d.model, target->model.name);
+  EXPECT_EQ(d.legs_used, 4);
+  EXPECT_LT(geometry::Distance(d.T_lidar_shelf, T_lidar_shelf), 0.02);
+  // A square model: its heading is known up to a quarter turn.
+  EXPECT_LT(std::abs(geometry::AngleDiffModulo(d.T_lidar_shelf.yaw, T_lidar_shelf.yaw,
+                                               target->model.HeadingPeriod())),
+            0.015);
+}
+
 }  // namespace
 }  // namespace shelfdock::eval

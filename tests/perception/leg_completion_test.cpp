@@ -288,31 +288,5 @@ TEST(LegCompletionTest, ALegCandidateBehindAnEmptyCornerIsNoBlend) {
   }
 }
 
-// A 1250 x 1250 shelf (40 mm legs) seen by the wide beam with its far legs 3.5-4 m out and a wall
-// 0.35 m behind them: each far leg's blended returns stand centimetres behind it and the search
-// takes them for legs at that range, so no leg set fits a model. Both far corners blended on
-// their bearings complete the shelf from its near legs: returned within 2 cm / 15 mrad of the
-// truth. With max_blend_m 0 it is not.
-TEST(LegCompletionTest, TwoFarLegsEachSeenOnlyBlendedCompleteTheShelf) {
-  const geometry::ShelfModel square = PaperModels()[2];
-  ASSERT_EQ(square.name, "t1-rect-1250x1250");
-  const geometry::Pose2 T_shelf(3.1, -0.2, 0.05);
-  sim::World world;
-  world.AddShelf(1, square, T_shelf);
-  world.AddWall({{4.1, -4.0}, {4.1, 4.0}});
-  const auto scan = testing::SimScan(world, {}, 1, WideBeam());
-  const geometry::Pose2 preset(T_shelf.x - 0.1, T_shelf.y + 0.08, T_shelf.yaw - 0.04);
-  const DetectionResult r = Detector(PaperModels()).Detect(scan, preset);
-  ASSERT_EQ(r.detections.size(), 1u);
-  EXPECT_GT(r.stats.completed_sets, 0);
-  const Detection& d = r.detections[0];
-  EXPECT_EQ(d.model, square.name);
-  EXPECT_LT(geometry::Distance(d.T_lidar_shelf, T_shelf), 0.02);
-  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, T_shelf.yaw, true), 0.015);
-  DetectorConfig off;
-  off.completion.max_blend_m = 0.0;
-  EXPECT_TRUE(Detector(PaperModels(), off).Detect(scan, preset).detections.empty());
-}
-
 }  // namespace
 }  // namespace shelfdock::perception
