@@ -67,6 +67,7 @@ nlohmann::json DetectionStatsToJson(const perception::DetectionStats& s) {
             {"model", s.rejected.model},
             {"three_leg_error", s.rejected.three_leg_error},
             {"hidden_leg_no_preset", s.rejected.hidden_leg_no_preset},
+            {"blended_legs", s.rejected.blended_legs},
             {"leg_seen_through", s.rejected.leg_seen_through},
             {"low_confidence", s.rejected.low_confidence},
             {"lost_legs", s.rejected.lost_legs},

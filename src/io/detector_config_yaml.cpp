@@ -88,6 +88,9 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("leg_width_bias_beams", c.leg_width_bias_beams);
   f.Read("leg_width_bias_slack_m", c.leg_width_bias_slack_m);
   f.Read("leg_width_scale_m", c.leg_width_scale_m);
+  f.Read("blend_max_returns", c.blend_max_returns);
+  f.Read("blend_max_step_m", c.blend_max_step_m);
+  f.Read("blend_narrow_bias_m", c.blend_narrow_bias_m);
   f.Read("min_confidence", c.min_confidence);
   f.Read("min_confidence_unvouched", c.min_confidence_unvouched);
   f.Read("overlap_margin_m", c.overlap_margin_m);

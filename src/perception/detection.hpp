@@ -60,6 +60,8 @@ struct RejectionCounts {
   int hidden_leg_no_preset = 0;  ///< without a preset, 3 legs whose 4th is hidden by something
                                  ///< other than its own legs: nothing vouches for it
   int leg_seen_through = 0;      ///< beams pass where a leg of the hypothesis should stand
+  int blended_legs = 0;          ///< two or more legs may be blends of thinner legs and their
+                                 ///< background, and the legs look narrower than the model's
   int low_confidence = 0;        ///< the evidence is too weak (confidence < min_confidence)
   int lost_legs = 0;             ///< its legs went to a better-supported shelf (or a better model)
   int off_preset = 0;            ///< won its legs, but stands too far from (or turned against) the
@@ -89,6 +91,7 @@ enum class Verdict {
   kThreeLegError,      ///< RejectionCounts::three_leg_error
   kHiddenLegNoPreset,  ///< RejectionCounts::hidden_leg_no_preset
   kLegSeenThrough,     ///< RejectionCounts::leg_seen_through
+  kBlendedLegs,        ///< RejectionCounts::blended_legs
   kLowConfidence,      ///< RejectionCounts::low_confidence
   kLostLegs,           ///< RejectionCounts::lost_legs
   kOffPreset,          ///< RejectionCounts::off_preset

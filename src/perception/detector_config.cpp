@@ -80,6 +80,9 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.leg_width_bias_beams >= 0.0, "evidence.leg_width_bias_beams", ">= 0");
   k.Check(e.leg_width_bias_slack_m >= 0.0, "evidence.leg_width_bias_slack_m", ">= 0");
   k.Check(e.leg_width_scale_m > 0.0, "evidence.leg_width_scale_m", "> 0");
+  k.Check(e.blend_max_returns >= 0, "evidence.blend_max_returns", ">= 0 (0: off)");
+  k.Check(e.blend_max_step_m > 0.0, "evidence.blend_max_step_m", "> 0");
+  k.Check(e.blend_narrow_bias_m >= 0.0, "evidence.blend_narrow_bias_m", ">= 0");
   k.Check(e.min_confidence >= 0.0 && e.min_confidence < 1.0, "evidence.min_confidence",
           "in [0, 1)");
   k.Check(e.min_confidence_unvouched >= 0.0 && e.min_confidence_unvouched < 1.0,

@@ -126,6 +126,13 @@ struct EvidenceConfig {
                                           ///< beam spacings plus leg_width_bias_slack_m
   double leg_width_bias_slack_m = 0.006;  ///< [m] legs' mean width: see leg_width_bias_beams
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
+  /// A leg of at most blend_max_returns returns whose beams either side returned from at most
+  /// blend_max_step_m behind it may be a thinner leg blended with its background (MayBeBlend);
+  /// a hypothesis on two or more such legs whose legs look narrower than its model's by more
+  /// than blend_narrow_bias_m on average is not returned (blended_legs). 0 returns: off.
+  int blend_max_returns = 2;
+  double blend_max_step_m = 0.3;          ///< [m] see blend_max_returns
+  double blend_narrow_bias_m = 0.006;     ///< [m] see blend_max_returns
   double min_confidence = 0.3;            ///< [-] below this a hypothesis is not returned
   double min_confidence_unvouched = 0.4;  ///< [-] the same for three legs (the fourth not seen)
                                           ///< with no preset or beyond the map's error of it

@@ -320,6 +320,17 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   return ev;
 }
 
+bool MayBeBlend(const Cluster& c, const EvidenceConfig& config) {
+  if (c.assumed_range_m || c.points.empty() ||
+      c.points.size() > static_cast<std::size_t>(config.blend_max_returns)) {
+    return false;
+  }
+  auto close_behind = [&](const std::optional<double>& step) {
+    return step && *step > 0.0 && *step <= config.blend_max_step_m;
+  };
+  return close_behind(c.edges.before_step_m) && close_behind(c.edges.after_step_m);
+}
+
 double ShelfConfidence(const ShelfEvidence& ev, double leg_chi2, int legs,
                        const EvidenceConfig& config) {
   const int unobserved = 4 - ev.legs_seen - ev.legs_occluded - ev.legs_seen_through;

@@ -73,6 +73,13 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              double angle_increment_rad, bool vouched,
                              const EvidenceConfig& config);
 
+/// True when the leg candidate `c` may be a thinner leg seen only blended with what stands close
+/// behind it (one echo between the two, Eq. 1's mixed point with no clean return of the leg): at
+/// most blend_max_returns returns, and the beams either side returned from behind it, at most
+/// blend_max_step_m. Its range then overstates the leg's. Never for blend_max_returns 0, or for
+/// a cluster already placed by its bearing (Cluster::assumed_range_m).
+bool MayBeBlend(const Cluster& c, const EvidenceConfig& config);
+
 /// Confidence in [0, 1]: the product of
 /// - leg support: (seen + occluded_credit * occluded + unobserved_credit * unobserved) / 4,
 ///   a leg seen through counts 0;

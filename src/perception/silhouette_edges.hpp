@@ -22,6 +22,10 @@ struct SilhouetteEdges {
   /// angle drops a beam or so.
   bool before_cut = false;
   bool after_cut = false;
+  /// [m] How far behind the outer return the next beam out returned (negative: nearer); empty
+  /// where that beam returned nothing or the scan has none.
+  std::optional<double> before_step_m;
+  std::optional<double> after_step_m;
 };
 
 /// The edges of the object whose returns run from `first` to `last` (beam order), read from
