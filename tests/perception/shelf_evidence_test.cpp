@@ -3,6 +3,7 @@
 #include "perception/shelf_evidence.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -574,6 +575,33 @@ TEST(ShelfEvidenceTest, AnObjectsPointsCountTheSurfaceTheyCover) {
   EXPECT_EQ(far.interior_points, 8);
   EXPECT_NEAR(far.interior_object_points, 8.0, 1e-12);
   EXPECT_NEAR(evidence(0.6, 30, 0.0).interior_object_points, 30.0, 1e-12);
+}
+
+// MayBeBlend: a cluster of at most blend_max_returns returns whose beams either side returned from
+// behind it, at most blend_max_step_m: one echo of a thin leg and what stands close behind it
+// would look so. Not with more returns, a background farther off, something nearer beside it, a
+// dropout beside it, a cluster already placed by its bearing, or with the rule off.
+TEST(ShelfEvidenceTest, ALegOfFewReturnsCloseInFrontOfItsBackgroundMayBeABlend) {
+  const EvidenceConfig config;
+  auto leg = [](int returns, std::optional<double> before, std::optional<double> after) {
+    Cluster c;
+    for (int k = 0; k < returns; ++k) c.points.push_back(testing::BeamPoint(300 + k, 3.5));
+    c.edges.before_step_m = before;
+    c.edges.after_step_m = after;
+    return c;
+  };
+  EXPECT_TRUE(MayBeBlend(leg(1, 0.2, 0.25), config));
+  EXPECT_TRUE(MayBeBlend(leg(2, 0.05, config.blend_max_step_m), config));
+  EXPECT_FALSE(MayBeBlend(leg(3, 0.2, 0.25), config));
+  EXPECT_FALSE(MayBeBlend(leg(2, 0.2, config.blend_max_step_m + 0.01), config));
+  EXPECT_FALSE(MayBeBlend(leg(2, 0.2, -0.5), config));
+  EXPECT_FALSE(MayBeBlend(leg(2, 0.2, std::nullopt), config));
+  Cluster placed = leg(2, 0.2, 0.25);
+  placed.assumed_range_m = 3.3;
+  EXPECT_FALSE(MayBeBlend(placed, config));
+  EvidenceConfig off;
+  off.blend_max_returns = 0;
+  EXPECT_FALSE(MayBeBlend(leg(1, 0.2, 0.25), off));
 }
 
 }  // namespace

@@ -53,6 +53,22 @@ TEST(SilhouetteEdgesTest, SomethingNearerOrJustBehindLeavesThatSideOpen) {
   EXPECT_FALSE(FindSilhouetteEdges(close, close[3], close[6], kMinDepth).after_rad);
 }
 
+// How far behind the object the next beam out returned, kept whatever it was: 2 m to the wall
+// before the leg; after it 0.2 m (a background close behind, where a thin leg's echo may have
+// blended with it), -0.4 m (an occluder) or nothing (a dropout).
+TEST(SilhouetteEdgesTest, TheDepthStepToTheNextBeamOutIsKept) {
+  for (const double after : {1.2, 0.6}) {
+    const auto points = Scan(after);
+    const SilhouetteEdges edges = FindSilhouetteEdges(points, points[3], points[6], kMinDepth);
+    ASSERT_TRUE(edges.before_step_m.has_value());
+    EXPECT_NEAR(*edges.before_step_m, 2.0, 1e-12);
+    ASSERT_TRUE(edges.after_step_m.has_value());
+    EXPECT_NEAR(*edges.after_step_m, after - 1.0, 1e-12);
+  }
+  const auto dropout = Scan(std::nullopt);
+  EXPECT_FALSE(FindSilhouetteEdges(dropout, dropout[3], dropout[6], kMinDepth).after_step_m);
+}
+
 TEST(SilhouetteEdgesTest, AnOccluderOrTheScansEndCutsASideADropoutDoesNot) {
   const auto nearer = Scan(0.6);
   const SilhouetteEdges occluded = FindSilhouetteEdges(nearer, nearer[3], nearer[6], kMinDepth);
