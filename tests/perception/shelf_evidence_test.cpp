@@ -471,46 +471,61 @@ TEST(ShelfEvidenceTest, PersonInsideTheFootprintIsNotAForeignLeg) {
 }
 
 // A leg-sized sliver inside the footprint of a 1075x883 shelf 2 m ahead (three returns, 3 cm
-// across, 0.2 m in from a front leg) that some leg set of the search uses. Whole, it is a foreign
-// leg, the phantom's signature, vouched or not. Partly hidden by something nearer, it is taken
-// for the visible part of a larger object (a person's leg behind the shelf's own) only where the
-// map vouches for the shelf: its points still count, as an object's.
-TEST(ShelfEvidenceTest, APartlyHiddenSliverInsideAVouchedShelfIsNoForeignLeg) {
+// across, 0.2 m in from a front leg) that some leg set of the search uses, next in the scan to a
+// cluster in front of it: the shelf's own front leg, or a post that is no leg of the shelf. Whole,
+// it is a foreign leg, the phantom's signature, vouched or not. Partly hidden, it is taken for the
+// visible part of a larger object (a person's leg behind the shelf's own) only when the shelf's
+// own leg hides it and the map vouches for the shelf: its points still count, as an object's.
+TEST(ShelfEvidenceTest, ASliverItsOwnLegPartlyHidesInsideAVouchedShelfIsNoForeignLeg) {
   const geometry::ShelfModel model = PaperModels()[1];
   const geometry::Pose2 T_lidar_shelf(2.0 + 0.5 * model.length_m, 0.0, 0.0);
   const double alpha = testing::kWlrAlpha;
+  // Returns at `centre`'s range on `count` beams around its bearing, as span `pre.spans.size()`.
+  auto add_span = [&](PreprocessOutput& pre, const Eigen::Vector2d& centre, int count) {
+    ClusterSpan span;
+    span.begin = pre.points.size();
+    const int middle = static_cast<int>(std::lround(std::atan2(centre.y(), centre.x()) / alpha));
+    for (int k = 0; k < count; ++k) {
+      pre.points.push_back(testing::BeamPoint(middle - count / 2 + k, centre.norm()));
+    }
+    span.end = pre.points.size();
+    for (std::size_t i = span.begin; i < span.end; ++i) {
+      span.centroid += pre.points[i].p / static_cast<double>(count);
+    }
+    span.extent_m = (pre.points[span.end - 1].p - pre.points[span.begin].p).norm();
+    pre.spans.push_back(span);
+  };
+  // Span 0 the sliver, span 1 the cluster beside it in front: the front leg at corner 3
+  // (LegCentres: -length / 2, +width / 2), its near face 2 cm in front of its centre.
   PreprocessOutput pre;
-  const Eigen::Vector2d inside = T_lidar_shelf * Eigen::Vector2d(-0.5 * model.length_m + 0.2, 0.2);
-  for (int k = -1; k <= 1; ++k) {
-    ScanPoint q;
-    q.angle = std::atan2(inside.y(), inside.x()) + k * alpha;
-    q.range = inside.norm();
-    q.p = q.range * Eigen::Vector2d(std::cos(q.angle), std::sin(q.angle));
-    q.beam = 500 + k;
-    pre.points.push_back(q);
-  }
-  ClusterSpan span;
-  span.begin = 0;
-  span.end = pre.points.size();
-  span.centroid = inside;
-  span.extent_m = (pre.points.back().p - pre.points.front().p).norm();
-  pre.spans.push_back(span);
+  add_span(pre, T_lidar_shelf * Eigen::Vector2d(-0.5 * model.length_m + 0.2, 0.2), 3);
+  const Eigen::Vector2d front = T_lidar_shelf * model.LegCentres()[3];
+  add_span(pre, front - 0.02 * front.normalized(), 4);
+  ASSERT_LT(pre.points[2].beam, pre.points[3].beam);  // beam order
+  Cluster leg;
+  leg.points.assign(pre.points.begin() + 3, pre.points.end());
+  leg.centroid = pre.spans[1].centroid;
+  leg.span = 1;
+  pre.candidates.push_back(leg);
   const EvidenceConfig config;
-  auto evidence = [&](SpanRole role, bool vouched) {
-    return GatherEvidence(T_lidar_shelf, model, {-1, -1, -1, -1}, pre, {role}, alpha, vouched,
-                          config);
+  // `own`: the cluster in front is the shelf's corner 3 (else a post no leg of the shelf).
+  auto evidence = [&](SpanRole role, bool vouched, bool own) {
+    const std::array<int, 4> corners =
+        own ? std::array<int, 4>{-1, -1, -1, 0} : std::array<int, 4>{-1, -1, -1, -1};
+    return GatherEvidence(T_lidar_shelf, model, corners, pre, {role, SpanRole::kLeg}, alpha,
+                          vouched, config);
   };
   for (const bool vouched : {false, true}) {
-    const ShelfEvidence whole = evidence(SpanRole::kLeg, vouched);
+    const ShelfEvidence whole = evidence(SpanRole::kLeg, vouched, true);
     EXPECT_EQ(whole.foreign_legs_inside, 1) << vouched;
     EXPECT_EQ(whole.interior_leg_points, 3) << vouched;
-    const ShelfEvidence other = evidence(SpanRole::kOther, vouched);
+    const ShelfEvidence other = evidence(SpanRole::kOther, vouched, true);
     EXPECT_EQ(other.foreign_legs_inside, 0) << vouched;
     EXPECT_EQ(other.interior_points, 3) << vouched;
   }
-  const ShelfEvidence unvouched = evidence(SpanRole::kPartlyHiddenLeg, false);
-  EXPECT_EQ(unvouched.foreign_legs_inside, 1);
-  const ShelfEvidence vouched = evidence(SpanRole::kPartlyHiddenLeg, true);
+  EXPECT_EQ(evidence(SpanRole::kPartlyHiddenLeg, false, true).foreign_legs_inside, 1);
+  EXPECT_EQ(evidence(SpanRole::kPartlyHiddenLeg, true, false).foreign_legs_inside, 1);
+  const ShelfEvidence vouched = evidence(SpanRole::kPartlyHiddenLeg, true, true);
   EXPECT_EQ(vouched.foreign_legs_inside, 0);
   EXPECT_EQ(vouched.interior_leg_points, 0);
   EXPECT_EQ(vouched.interior_points, 3);
