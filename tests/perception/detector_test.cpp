@@ -82,7 +82,7 @@ TEST(DetectorTest, FindsEveryModelAtAllDistancesAndHeadings) {
         }
         const Detection& d = r.detections[0];
         const double e_c = geometry::Distance(d.T_lidar_shelf, truth);
-        const double e_y = SymmetricYawError(d.T_lidar_shelf.yaw, truth.yaw, model.IsSquare());
+        const double e_y = SymmetricYawError(d.T_lidar_shelf.yaw, truth.yaw, model);
         worst_centre = std::max(worst_centre, e_c);
         worst_yaw = std::max(worst_yaw, e_y);
         EXPECT_LT(e_c, kCentreTol) << model.name << " standoff " << standoff << " yaw " << yaw;

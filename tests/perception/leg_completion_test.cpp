@@ -145,7 +145,7 @@ TEST(LegCompletionTest, TheDetectorReturnsTheCompletedShelfAtItsTruePose) {
   EXPECT_GT(r.stats.completed_sets, 0);
   // Noise free, one leg by a single return: within 1 cm and 10 mrad of the truth.
   EXPECT_LT((d.T_lidar_shelf.translation() - truth.translation()).norm(), 0.01);
-  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, truth.yaw, false), 0.01);
+  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, truth.yaw, Shelf()), 0.01);
 }
 
 TEST(LegCompletionTest, ACompletedShelfMatchesTheModelAsTightlyAsWithoutAPreset) {
@@ -253,7 +253,7 @@ TEST(LegCompletionTest, ALegSeenOnlyBlendedWithItsBackgroundIsPlacedByItsBearing
   const Detection& d = r.detections[0];
   EXPECT_EQ(d.model, round.name);
   EXPECT_LT(geometry::Distance(d.T_lidar_shelf, T_shelf), 0.01);
-  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, T_shelf.yaw, false), 0.01);
+  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, T_shelf.yaw, round), 0.01);
   DetectorConfig off;
   off.completion.max_blend_m = 0.0;
   const DetectionResult without = Detector(PaperModels(), off).Detect(scan, preset);

@@ -34,7 +34,7 @@ TEST(ShelfFitTest, FourAndThreeLegsAllRoundIncludingNearPi) {
         EXPECT_TRUE(fit->converged);
         EXPECT_EQ(fit->legs_used, count);
         EXPECT_LT(geometry::Distance(fit->T_lidar_shelf, truth), 1e-6) << yaw;
-        EXPECT_LT(testing::SymmetricYawError(fit->T_lidar_shelf.yaw, yaw, false), 1e-6) << yaw;
+        EXPECT_LT(testing::SymmetricYawError(fit->T_lidar_shelf.yaw, yaw, model), 1e-6) << yaw;
         EXPECT_GE(fit->T_lidar_shelf.yaw, -M_PI);
         EXPECT_LT(fit->T_lidar_shelf.yaw, M_PI);
         EXPECT_NEAR(fit->length_m, model.length_m, 1e-9);
@@ -87,7 +87,7 @@ TEST(RefineShelfPoseTest, ExactLegsGiveTheTruthAndZeroChiSquare) {
       ASSERT_TRUE(fit.has_value());
       const ShelfRefineResult r = RefineShelfPose(legs, count, model, *fit, Sigmas(0.005, 0.002));
       EXPECT_LT(geometry::Distance(r.T_lidar_shelf, truth), 1e-6) << yaw;
-      EXPECT_LT(testing::SymmetricYawError(r.T_lidar_shelf.yaw, yaw, false), 1e-6) << yaw;
+      EXPECT_LT(testing::SymmetricYawError(r.T_lidar_shelf.yaw, yaw, model), 1e-6) << yaw;
       EXPECT_GE(r.T_lidar_shelf.yaw, -M_PI);
       EXPECT_LT(r.T_lidar_shelf.yaw, M_PI);
       EXPECT_LT(r.chi2, 1e-6);

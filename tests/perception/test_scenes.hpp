@@ -44,9 +44,10 @@ inline geometry::LaserScan SimScan(const sim::World& world, const geometry::Pose
   return lidar.Scan(world, T_world_lidar);
 }
 
-/// Smallest heading error modulo the model's symmetry (pi, or pi/2 for squares).
-inline double SymmetricYawError(double yaw, double truth, bool square) {
-  return geometry::AngleDiffModulo(yaw, truth, square ? 0.5 * M_PI : M_PI);
+/// Smallest heading error modulo the model's symmetry (ShelfModel::HeadingPeriod: pi, or pi/2
+/// for squares).
+inline double SymmetricYawError(double yaw, double truth, const geometry::ShelfModel& model) {
+  return geometry::AngleDiffModulo(yaw, truth, model.HeadingPeriod());
 }
 
 /// Exact points of a ray fan (sensor at the origin) on a circle or an oriented box: the first

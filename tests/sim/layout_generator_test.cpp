@@ -2,7 +2,6 @@
 // (gaps, standoffs, presets, an occluded leg really hidden, a person really beside a leg).
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -17,13 +16,6 @@ namespace {
 
 using shelfdock::testing::PaperModels;
 constexpr double kEps = 1e-9;
-
-/// Smallest heading difference modulo the model's symmetry.
-double SymmetricYawError(double yaw, double truth, bool square) {
-  const double step = square ? 0.5 * std::numbers::pi : std::numbers::pi;
-  const double d = geometry::AngleDiff(yaw, truth);
-  return std::abs(d - step * std::round(d / step));
-}
 
 TEST(LayoutGeneratorTest, SameSeedSameSceneAndScan) {
   const auto models = PaperModels();
@@ -69,8 +61,8 @@ TEST(LayoutGeneratorTest, SensorAndPresetWithinRanges) {
       ASSERT_TRUE(s.T_world_preset.has_value());
       EXPECT_LE(geometry::Distance(*s.T_world_preset, target->T_world_shelf),
                 config.preset_error_xy_m + kEps);
-      EXPECT_LE(SymmetricYawError(s.T_world_preset->yaw, target->T_world_shelf.yaw,
-                                  target->model.IsSquare()),
+      EXPECT_LE(geometry::AngleDiffModulo(s.T_world_preset->yaw, target->T_world_shelf.yaw,
+                                          target->model.HeadingPeriod()),
                 config.preset_error_yaw_rad + kEps);
       const Eigen::Vector2d p_lidar =
           s.T_world_lidar.inverse() * target->T_world_shelf.translation();
