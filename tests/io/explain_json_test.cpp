@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -107,6 +109,31 @@ TEST(DetectionJson, StatsCarryTheRangeNoise) {
   const nlohmann::json none = DetectionResultToJson(detector.Detect(empty), false);
   ASSERT_TRUE(none["stats"].contains("range_noise_m"));
   EXPECT_EQ(none["stats"]["range_noise_m"].get<double>(), 0.0);
+}
+
+// stats.rejected has one count per rejection verdict, under the verdict's own name (the name
+// `detect --explain` gives each hypothesis), so a user can match the two.
+TEST(DetectionJson, EachRejectionCountStandsUnderItsVerdictsName) {
+  perception::DetectionStats stats;
+  perception::RejectionCounts& r = stats.rejected;
+  const std::vector<std::pair<perception::Verdict, int*>> counts = {
+      {perception::Verdict::kFit, &r.fit},
+      {perception::Verdict::kModel, &r.model},
+      {perception::Verdict::kThreeLegError, &r.three_leg_error},
+      {perception::Verdict::kHiddenLegNoPreset, &r.hidden_leg_no_preset},
+      {perception::Verdict::kLegSeenThrough, &r.leg_seen_through},
+      {perception::Verdict::kBlendedLegs, &r.blended_legs},
+      {perception::Verdict::kLowConfidence, &r.low_confidence},
+      {perception::Verdict::kLostLegs, &r.lost_legs},
+      {perception::Verdict::kOffPreset, &r.off_preset}};
+  for (std::size_t i = 0; i < counts.size(); ++i) *counts[i].second = static_cast<int>(i) + 1;
+  const nlohmann::json rejected = DetectionStatsToJson(stats)["rejected"];
+  EXPECT_EQ(rejected.size(), counts.size()) << rejected.dump();
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    const char* name = perception::VerdictName(counts[i].first);
+    ASSERT_TRUE(rejected.contains(name)) << name;
+    EXPECT_EQ(rejected[name].get<int>(), static_cast<int>(i) + 1) << name;
+  }
 }
 
 // Each detection carries the robust fit's pose beside the refined one, as the `fit` object, with
