@@ -225,11 +225,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   // (eval-layouts seeds 1 and --scenes-per-class 1000 seed0 20001 / 40001 / 5001 / 60001 / 80001:
   // phantoms 1 / 2 / 3 / 1 / 3 / 6 -> 0 / 1 / 1 / 1 / 3 / 5, right first +1 / 0 / 0 / -2 / -3 /
   // -1; a shelf against a wall, legs of its own model's width, is not affected).
-  const int maybe_blends =
-      static_cast<int>(std::count_if(set.legs.begin(), set.legs.begin() + set.count, [&](int leg) {
-        return MayBeBlend(in.pre.candidates[leg], config.evidence);
-      }));
-  if (maybe_blends >= 2 && ev.leg_width_bias_m < -config.evidence.blend_narrow_bias_m) {
+  if (ev.legs_maybe_blended >= 2 && ev.leg_width_bias_m < -config.evidence.blend_narrow_bias_m) {
     rec.verdict = Verdict::kBlendedLegs;
     return h;
   }

@@ -66,7 +66,8 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
     if (off <= narrow) ++narrow_returns;
     if (std::abs(q.range - range) <= config.present_margin_m) {
       ++present;
-      const int span = SpanOfPoint(pre.spans, i);
+      // The cluster's extent only matters to the large-object rule (max_present_object_m).
+      const int span = config.max_present_object_m > 0.0 ? SpanOfPoint(pre.spans, i) : -1;
       if (span >= 0) {
         look.present_extent_m =
             std::max(look.present_extent_m, pre.spans[static_cast<std::size_t>(span)].extent_m);
@@ -155,15 +156,15 @@ bool IsForeignLeg(const PreprocessOutput& pre, const ClusterSpan& span, SpanRole
   const double seen_width =
       SeenWidth(pre.points[span.begin], pre.points[span.end - 1], range, alpha);
   if (seen_width > leg_extent + range * alpha + config.leg_width_slack_m) return false;
-  // Where the map vouches for the shelf, a leg-sized cluster that one of the shelf's own legs
-  // partly hides (`beside_own_leg`: the cluster next to it in the scan is one of them, in front)
-  // is taken for what it most often is there: the sliver of a person's leg showing beside the
-  // shelf's leg, not a leg of another shelf (eval-layouts seeds 1 +2, --scenes-per-class 1000
-  // seed0 20001 / 40001 / 5001 +0 / +5 / +6 right shelves with any occluder, phantoms unchanged;
-  // without the map's word, 2 -> 5 detections in 1000 clutter scenes). Any occluder made a
-  // shelf of posts in clutter, one post partly behind another (--class clutter
-  // --scenes-per-class 3000 --seed0 60000: 6 -> 7 detections); only the own legs: 6, for 2 / 0 /
-  // 2 / 4 of those right shelves.
+  // Where the map vouches for the shelf, a leg-sized cluster whose outline something nearer cuts
+  // (kPartlyHiddenLeg) and whose neighbour in the scan is one of the shelf's own legs
+  // (`beside_own_leg`) is taken for what it most often is there: the sliver of a person's leg
+  // showing beside the shelf's leg, not a leg of another shelf (eval-layouts seeds 1 +2,
+  // --scenes-per-class 1000 seed0 20001 / 40001 / 5001 +0 / +5 / +6 right shelves with any
+  // occluder, phantoms unchanged; without the map's word, 2 -> 5 detections in 1000 clutter
+  // scenes). Any occluder made a shelf of posts in clutter, one post partly behind another
+  // (--class clutter --scenes-per-class 3000 --seed0 60000: 6 -> 7 detections); only the own
+  // legs: 6, for 2 / 0 / 2 / 4 of those right shelves.
   return !(vouched && role == SpanRole::kPartlyHiddenLeg && beside_own_leg);
 }
 
@@ -207,6 +208,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     if (cand >= 0) {
       const Cluster& c = pre.candidates[cand];
       ev.legs[k] = LegView::kSeen;
+      if (MayBeBlend(c, config)) ++ev.legs_maybe_blended;
       // Leg size: a post, a person's leg or a box corner is wider than the model's leg.
       // Widths compared as angles (the outer beams' span plus one beam against the section's
       // silhouette), in metres at the leg's range.

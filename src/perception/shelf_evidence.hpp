@@ -36,6 +36,9 @@ struct ShelfEvidence {
   /// Of the kPresent legs, those whose returns belong to a cluster wider than
   /// EvidenceConfig::max_present_object_m: a box, a wall or a rack stands where the leg should.
   int legs_in_large_object = 0;
+  /// Of its own leg clusters, those that may be a thinner leg blended with its background
+  /// (MayBeBlend): their range overstates the leg's.
+  int legs_maybe_blended = 0;
   int interior_points = 0;      ///< points inside the footprint shrunk by interior_margin_m,
                                 ///< not counting the occluders that hide one of its legs
   int interior_leg_points = 0;  ///< of interior_points, those of foreign legs

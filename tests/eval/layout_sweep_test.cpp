@@ -15,7 +15,6 @@
 // eval-layouts), so the target test is
 // disabled: it runs with --gtest_also_run_disabled_tests and must be enabled when the targets
 // are met. CI runs the sweep and checks that it scores every class.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -238,30 +237,22 @@ TEST(LayoutSceneTest, TwoFarLegsEachSeenOnlyBlendedCompleteTheShelf) {
 // with the rule off (blend_max_returns 0) the phantom is returned.
 TEST(LayoutSceneTest, LegsThatMayBeBlendsAndLookTooThinMakeNoPhantom) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const sim::LayoutScene scene =
-      sim::GenerateLayoutScene(sim::LayoutClass::kAisle, 149, models, LayoutWithPresets());
-  ASSERT_EQ(scene.lidar_name, "tim571");
-  const auto preset = scene.PresetInLidar();
-  ASSERT_TRUE(preset.has_value());
-  const geometry::LaserScan scan = sim::SimulateLayoutScan(scene);
-  // Distance from a detection to the nearest true shelf centre.
-  auto nearest_shelf_m = [&](const perception::Detection& d) {
-    double best = 1e9;
-    for (const auto& shelf : scene.shelves()) {
-      const geometry::Pose2 T_lidar_shelf = scene.T_world_lidar.inverse() * shelf.T_world_shelf;
-      best = std::min(best, (T_lidar_shelf.translation() - d.T_lidar_shelf.translation()).norm());
-    }
-    return best;
-  };
-  const perception::DetectionResult r = perception::Detector(models).Detect(scan, *preset);
-  for (const auto& d : r.detections) EXPECT_LT(nearest_shelf_m(d), 0.05) << d.model;
-  EXPECT_GE(r.stats.rejected.blended_legs, 1);
+  const sim::LayoutConfig layout = LayoutWithPresets();
+  LayoutSweepConfig config;  // the phantom radius
+  config.classes = {sim::LayoutClass::kAisle};
+  config.seed0 = 149;
+  config.scenes_per_class = 1;
+  const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
+  ASSERT_EQ(with.size(), 1u);
+  ASSERT_EQ(with[0].lidar_name, "tim571");
+  EXPECT_EQ(with[0].phantoms, 0);
+  EXPECT_GE(with[0].stats.rejected.blended_legs, 1);
   perception::DetectorConfig off;
   off.evidence.blend_max_returns = 0;
-  const perception::DetectionResult without =
-      perception::Detector(models, off).Detect(scan, *preset);
-  ASSERT_FALSE(without.detections.empty());
-  EXPECT_GT(nearest_shelf_m(without.detections.front()), 0.05);
+  const auto without = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
+  ASSERT_EQ(without.size(), 1u);
+  ASSERT_TRUE(without[0].first.has_value());
+  EXPECT_GT(without[0].first->nearest_shelf_m, config.phantom_radius_m);
 }
 
 }  // namespace
