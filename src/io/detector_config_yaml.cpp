@@ -19,6 +19,11 @@ void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
   f.Read("split_max_extra_m", c.split_max_extra_m);
   f.Read("split_min_step_m", c.split_min_step_m);
   f.Read("split_end_pieces", c.split_end_pieces);
+  f.Read("split_inner_pieces", c.split_inner_pieces);
+  f.Read("inner_step_sigmas", c.inner_step_sigmas);
+  f.Read("inner_offset_sigmas", c.inner_offset_sigmas);
+  f.Read("inner_min_offset_m", c.inner_min_offset_m);
+  f.Read("inner_surface_points", c.inner_surface_points);
   f.Read("split_noise_steps", c.split_noise_steps);
   f.Read("join_noise_breaks", c.join_noise_breaks);
   f.Read("surface_tolerance_m", c.surface_tolerance_m);

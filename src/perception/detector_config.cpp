@@ -23,6 +23,11 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(p.split_max_extra_m >= 0.0, "preprocess.split_max_extra_m", ">= 0 (0: never split)");
   k.Check(p.split_min_step_m > 0.0, "preprocess.split_min_step_m", "> 0");
   k.Check(p.split_noise_steps >= 0.0, "preprocess.split_noise_steps", ">= 0");
+  k.Check(p.inner_step_sigmas >= 0.0, "preprocess.inner_step_sigmas", ">= 0");
+  k.Check(p.inner_offset_sigmas >= 0.0, "preprocess.inner_offset_sigmas", ">= 0");
+  k.Check(p.inner_min_offset_m >= 0.0, "preprocess.inner_min_offset_m", ">= 0");
+  k.Check(p.inner_surface_points >= 2, "preprocess.inner_surface_points",
+          ">= 2 (a line on each side)");
   k.Check(p.min_point_fraction >= 0.0 && p.min_point_fraction <= 1.0,
           "preprocess.min_point_fraction", "in [0, 1]");
 

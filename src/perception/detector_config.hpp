@@ -28,6 +28,17 @@ struct PreprocessConfig {
   double split_min_step_m = 0.03;     ///< [m] smallest depth step split at
   bool split_end_pieces = true;       ///< wider clusters: a leg-sized piece at either end standing
                                       ///< a split step in front of the rest is a candidate too
+  bool split_inner_pieces = true;     ///< wider clusters: a leg-sized piece inside that stands
+                                      ///< out in front of the surface on both sides of it (a leg
+                                      ///< just in front of a wall) is a candidate too
+  double inner_step_sigmas = 2.0;     ///< [-] such a piece has a depth step of at least this many
+                                      ///< times the range noise (x sqrt 2) or split_min_step_m at
+                                      ///< one end
+  double inner_offset_sigmas = 4.0;   ///< [-] and stands in front of the line through the points
+                                      ///< beside it by a mean of this many times that mean's
+                                      ///< noise ...
+  double inner_min_offset_m = 0.04;   ///< [m] ... and at least this
+  int inner_surface_points = 4;       ///< [-] points on each side that line is fitted to
   double split_noise_steps = 3.0;     ///< [-] and at least this many times the scan's range noise
                                       ///< (times sqrt 2: a step is a difference of two ranges)
   double surface_tolerance_m = 0.02;  ///< [m] a piece within this of the line through its beam

@@ -24,6 +24,9 @@ struct Cluster {
   /// [m] Set for a thin leg seen only blended with its background (CompleteLegSets): its
   /// returns tell its bearing, not its range, so the leg stands at this range on their bearing.
   std::optional<double> assumed_range_m;
+  /// Cut from a surface it stands in front of (SurfaceProtrusions), inside a cluster no other
+  /// rule would have split: CompleteLegSets looks at its returns as at any wall's.
+  bool from_surface = false;
 };
 
 /// Where a blended leg (Cluster::assumed_range_m set) stands: at its assumed range on the

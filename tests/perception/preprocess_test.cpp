@@ -150,6 +150,7 @@ TEST(PreprocessTest, SplitCutsALegOutOfAPersonsLegTouchingIt) {
   PreprocessConfig no_split;
   no_split.split_max_extra_m = 0.0;
   no_split.split_end_pieces = false;
+  no_split.split_inner_pieces = false;
   struct Placement {
     double depth;  ///< [m] person's leg's nearest surface minus the leg's front face
     double gap;    ///< [beams] between the two silhouettes' edges

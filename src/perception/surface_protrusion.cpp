@@ -1,0 +1,161 @@
+#include "perception/surface_protrusion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+
+#include <Eigen/Eigenvalues>
+
+namespace shelfdock::perception {
+namespace {
+
+// A surface seen at a grazing angle places itself poorly along the beams.
+constexpr double kMinCosIncidence = 0.2;
+// Fewest points on each side that show the surface behind a piece: two may both be a leg's
+// (a part of a leg would then stand out in front of its own rest).
+constexpr std::size_t kMinSidePoints = 3;
+// The surface's line comes from this many times surface_points on each side.
+constexpr int kLineReach = 3;
+
+// Beam neighbours: consecutive valid points with at most this many beams without a return
+// between them (dark patches drop some).
+constexpr int kMaxMissingBeams = 3;
+
+bool Neighbours(const ScanPoint& a, const ScanPoint& b) {
+  return std::abs(b.beam - a.beam) - 1 <= kMaxMissingBeams;
+}
+
+// How far [begin, end) stands out in front of the line through the points beside it, in sigmas
+// of its mean offset; nullopt when the points beside it do not make one surface. The points
+// beside it may lie beyond the cluster: the far point of the step at a leg's edge is often
+// dropped as a mixed point, which breaks the cluster there.
+std::optional<double> StandOut(const std::vector<ScanPoint>& points, std::size_t begin,
+                               std::size_t end, const ProtrusionLimits& limits) {
+  const int k = std::max(1, limits.surface_points);
+  // The points beside the piece: up to `count` consecutive beam neighbours on each side.
+  auto reach_back = [&](int count) {
+    std::size_t i = begin;
+    while (i > 0 && static_cast<int>(begin - i) < count && Neighbours(points[i - 1], points[i])) {
+      --i;
+    }
+    return i;
+  };
+  auto reach_on = [&](int count) {
+    std::size_t i = end;
+    while (i < points.size() && static_cast<int>(i - end) < count &&
+           Neighbours(points[i - 1], points[i])) {
+      ++i;
+    }
+    return i;
+  };
+  const std::size_t before = reach_back(k);
+  const std::size_t after = reach_on(k);
+  if (begin - before < kMinSidePoints || after - end < kMinSidePoints) return std::nullopt;
+  // The surface's line from a wider stretch beside the piece (kLineReach times as many points
+  // on each side): a line through a few points either side can tilt to pass between a wall on
+  // one side and the rest of a leg on the other, and then a part of the leg stands out from it.
+  // The points right beside the piece must lie on that line (below): at the apex of a box's
+  // corner or a round object they stand out with the piece.
+  const std::size_t wide_before = reach_back(kLineReach * k);
+  const std::size_t wide_after = reach_on(kLineReach * k);
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  int n_wide = 0;
+  auto each_wide = [&](auto&& f) {
+    for (std::size_t i = wide_before; i < begin; ++i) f(points[i]);
+    for (std::size_t i = end; i < wide_after; ++i) f(points[i]);
+  };
+  each_wide([&](const ScanPoint& q) {
+    mean += q.p;
+    ++n_wide;
+  });
+  mean /= static_cast<double>(n_wide);
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  each_wide([&](const ScanPoint& q) { scatter += (q.p - mean) * (q.p - mean).transpose(); });
+  // Total least squares: the normal is the scatter's smaller axis.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
+  const Eigen::Vector2d normal = eig.eigenvectors().col(0);
+  if (std::sqrt(eig.eigenvalues()(0) / n_wide) > limits.surface_rms_m) return std::nullopt;
+  const double c = normal.dot(mean);
+  // The returns' mean offset in front of the line along their beams: the line's range on each
+  // bearing minus the return's.
+  auto mean_offset = [&](std::size_t from, std::size_t to) -> std::optional<double> {
+    double sum = 0.0;
+    for (std::size_t i = from; i < to; ++i) {
+      const Eigen::Vector2d u = points[i].p / points[i].range;
+      const double cos_incidence = normal.dot(u);
+      if (std::abs(cos_incidence) < kMinCosIncidence) return std::nullopt;
+      sum += c / cos_incidence - points[i].range;
+    }
+    return sum / static_cast<double>(to - from);
+  };
+  const auto offset = mean_offset(begin, end);
+  const auto offset_before = mean_offset(before, begin);
+  const auto offset_after = mean_offset(end, after);
+  if (!offset || !offset_before || !offset_after || *offset < limits.min_offset_m) {
+    return std::nullopt;
+  }
+  // Each side lies on the line, not in front of it with the piece: a line through the wall on
+  // one side and the rest of the leg on the other would pass between them, and a part of the
+  // leg would stand out from it.
+  if (std::max(*offset_before, *offset_after) > 0.5 * *offset) return std::nullopt;
+  const double n = static_cast<double>(end - begin);
+  const double sigma = limits.range_noise_m * std::sqrt(1.0 / n + 1.0 / n_wide);
+  if (sigma <= 0.0) return std::nullopt;
+  return *offset / sigma;
+}
+
+}  // namespace
+
+std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
+                                           const ClusterSpan& span,
+                                           const ProtrusionLimits& limits) {
+  struct Scored {
+    PieceRange piece;
+    double z;
+  };
+  std::vector<Scored> found;
+  if (span.size() < 2) return {};
+  auto fits = [&](std::size_t a, std::size_t b) {  // [a, b) no wider than a leg
+    return (points[b - 1].p - points[a].p).norm() <= limits.max_extent_m;
+  };
+  auto consider = [&](std::size_t a, std::size_t b, std::optional<Scored>& best) {
+    const auto z = StandOut(points, a, b, limits);
+    if (z && *z >= limits.offset_sigmas && (!best || *z > best->z)) best = Scored{{a, b}, *z};
+  };
+  // A boundary k lies between points k - 1 and k; the pieces lie inside the span, the steps
+  // that start or end them may cross its ends (a cluster break).
+  for (std::size_t k = std::max<std::size_t>(span.begin, 1); k <= span.end && k < points.size();
+       ++k) {
+    if (!Neighbours(points[k - 1], points[k])) continue;
+    // A step toward the sensor at k starts a piece [k, j) ...
+    if (k < span.end && points[k - 1].range - points[k].range >= limits.min_step_m) {
+      std::optional<Scored> best;
+      for (std::size_t j = k + 2; j <= span.end && fits(k, j); ++j) consider(k, j, best);
+      if (best) found.push_back(*best);
+    }
+    // ... a step away from it at k ends a piece [i, k).
+    if (k >= span.begin + 2 && points[k].range - points[k - 1].range >= limits.min_step_m) {
+      std::optional<Scored> best;
+      for (std::size_t i = k - 2; i + 1 > span.begin && fits(i, k); --i) {
+        consider(i, k, best);
+        if (i == 0) break;
+      }
+      if (best) found.push_back(*best);
+    }
+  }
+  // Overlapping pieces: the one standing out most.
+  std::sort(found.begin(), found.end(), [](const Scored& a, const Scored& b) { return a.z > b.z; });
+  std::vector<PieceRange> out;
+  for (const Scored& s : found) {
+    const bool overlaps = std::any_of(out.begin(), out.end(), [&](const PieceRange& r) {
+      return s.piece.begin < r.end && r.begin < s.piece.end;
+    });
+    if (!overlaps) out.push_back(s.piece);
+  }
+  std::sort(out.begin(), out.end(),
+            [](const PieceRange& a, const PieceRange& b) { return a.begin < b.begin; });
+  return out;
+}
+
+}  // namespace shelfdock::perception

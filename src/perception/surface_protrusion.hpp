@@ -1,0 +1,42 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "perception/preprocess.hpp"
+
+namespace shelfdock::perception {
+
+/// A piece [begin, end) of a cluster's points.
+struct PieceRange {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+};
+
+/// What makes a piece of a wider cluster a protrusion from its surface.
+struct ProtrusionLimits {
+  double max_extent_m = 0.1;    ///< [m] widest piece (MaxLegExtent)
+  double min_step_m = 0.03;     ///< [m] depth step toward the sensor at one of its ends, at least
+  double min_offset_m = 0.03;   ///< [m] mean offset in front of the surface, at least
+  double offset_sigmas = 4.0;   ///< [-] and at least this many times the noise of that mean
+  double range_noise_m = 0.01;  ///< [m] the scan's range noise
+  int surface_points = 4;       ///< [-] points on each side the surface's line is fitted to
+  double surface_rms_m = 0.03;  ///< [m] those points lie within this RMS of their line
+};
+
+/// Leg-sized pieces inside a cluster that stand out in front of its surface: a leg a few
+/// centimetres in front of a wall (a shelf pushed against it, a row's back legs before a rack)
+/// is closer to the wall than the break distance, so it lies inside the wall's cluster away from
+/// its ends, and with range noise comparable to the gap a step at one of its edges may be lost in
+/// the noise. A piece has at least two points, an extent of at most max_extent_m and a depth step
+/// of at least min_step_m toward the sensor at its start or away from it at its end (to a beam
+/// neighbour, which may lie beyond the cluster); the surface_points on either side of it (at
+/// least two each, consecutive beam neighbours, inside the cluster or beyond it: the far point of
+/// a leg's edge step is often dropped as a mixed point, which breaks the cluster there) lie on
+/// one line within surface_rms_m, and the piece's returns stand in front of that line, along
+/// their beams, by a mean of at least min_offset_m and offset_sigmas times the noise of that
+/// mean. Of overlapping pieces the one that stands out most (in sigmas) is kept.
+std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
+                                           const ClusterSpan& span, const ProtrusionLimits& limits);
+
+}  // namespace shelfdock::perception

@@ -1,0 +1,116 @@
+// SurfaceProtrusions (src/perception/surface_protrusion.cpp): a leg a few centimetres in front
+// of a wall, inside the wall's cluster, is cut out; a bare wall's range noise is not. Synthetic
+// returns on the kWlrAlpha beam fan with seeded Gaussian range noise.
+#include "perception/surface_protrusion.hpp"
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "test_scenes.hpp"
+
+namespace shelfdock::perception {
+namespace {
+
+constexpr double kAlpha = testing::kWlrAlpha;
+constexpr double kNoise = 0.01;     // [m] range noise
+constexpr double kWallRange = 2.0;  // [m] along the wall's normal (beam 50)
+constexpr int kLegFirst = 48;       // beams on the leg: a 40 mm leg at 2 m spans about 4
+constexpr int kLegLast = 51;
+
+ProtrusionLimits Limits() {
+  ProtrusionLimits l;
+  l.max_extent_m = 0.1;
+  l.min_step_m = std::max(0.03, 2.0 * std::sqrt(2.0) * kNoise);
+  l.min_offset_m = 0.04;
+  l.offset_sigmas = 4.0;
+  l.range_noise_m = kNoise;
+  l.surface_points = 4;
+  l.surface_rms_m = 3.0 * kNoise;
+  return l;
+}
+
+// Beams [first, last] of a wall square to beam 50 at kWallRange, the leg's beams `offset_m`
+// nearer (a leg face in front of the wall), with noise; `skip` beams are missing.
+std::vector<ScanPoint> WallWithLeg(int first, int last, double offset_m, std::uint64_t seed,
+                                   const std::vector<int>& skip = {}) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, kNoise);
+  std::vector<ScanPoint> pts;
+  for (int b = first; b <= last; ++b) {
+    if (std::find(skip.begin(), skip.end(), b) != skip.end()) continue;
+    double r = kWallRange / std::cos((b - 50) * kAlpha);
+    if (b >= kLegFirst && b <= kLegLast) r -= offset_m;
+    pts.push_back(testing::BeamPoint(b, r + noise(rng)));
+  }
+  return pts;
+}
+
+ClusterSpan Span(std::size_t begin, std::size_t end) {
+  ClusterSpan s;
+  s.begin = begin;
+  s.end = end;
+  return s;
+}
+
+// Beams of a piece.
+int FirstBeam(const std::vector<ScanPoint>& pts, const PieceRange& r) { return pts[r.begin].beam; }
+int LastBeam(const std::vector<ScanPoint>& pts, const PieceRange& r) { return pts[r.end - 1].beam; }
+
+// A leg 8 cm in front of the wall, in the middle of its cluster: one piece, the leg's four
+// beams (one beam either way tolerated: a noisy edge return may join or leave it), every seed.
+TEST(SurfaceProtrusionTest, ALegInFrontOfAWallInsideItsClusterIsCutOut) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const auto pts = WallWithLeg(20, 80, 0.08, seed);
+    const auto pieces = SurfaceProtrusions(pts, Span(0, pts.size()), Limits());
+    ASSERT_EQ(pieces.size(), 1u) << "seed " << seed;
+    EXPECT_NEAR(FirstBeam(pts, pieces[0]), kLegFirst, 1) << "seed " << seed;
+    EXPECT_NEAR(LastBeam(pts, pieces[0]), kLegLast, 1) << "seed " << seed;
+  }
+}
+
+// The same wall without the leg: its range noise makes no piece in 200 seeds.
+TEST(SurfaceProtrusionTest, ABareWallsNoiseIsNoPiece) {
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    const auto pts = WallWithLeg(20, 80, 0.0, seed);
+    EXPECT_TRUE(SurfaceProtrusions(pts, Span(0, pts.size()), Limits()).empty()) << "seed " << seed;
+  }
+}
+
+// A leg only 2 cm in front of the wall stands out by less than min_offset_m: no piece (such a
+// leg is left to the completion from the map, which judges blends).
+TEST(SurfaceProtrusionTest, ALegBarelyInFrontOfTheWallIsNoPiece) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const auto pts = WallWithLeg(20, 80, 0.02, seed);
+    EXPECT_TRUE(SurfaceProtrusions(pts, Span(0, pts.size()), Limits()).empty()) << "seed " << seed;
+  }
+}
+
+// The wall's return just past the leg was dropped (the trailing filter takes it for a mixed
+// point), which ends the cluster at the leg's last beam: the wall beyond the break still gives
+// the surface on that side, and the leg at the cluster's end is cut out.
+TEST(SurfaceProtrusionTest, TheSurfaceMayGoOnBeyondTheClustersEnd) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const auto pts = WallWithLeg(20, 80, 0.08, seed, {kLegLast + 1});
+    const std::size_t end = static_cast<std::size_t>(kLegLast - 20 + 1);  // beams 20..51
+    ASSERT_EQ(pts[end - 1].beam, kLegLast);
+    const auto pieces = SurfaceProtrusions(pts, Span(0, end), Limits());
+    ASSERT_EQ(pieces.size(), 1u) << "seed " << seed;
+    EXPECT_NEAR(FirstBeam(pts, pieces[0]), kLegFirst, 1) << "seed " << seed;
+    EXPECT_EQ(LastBeam(pts, pieces[0]), kLegLast) << "seed " << seed;
+  }
+}
+
+// Nothing beyond the leg (the wall ends there, open space behind): no surface on that side, so
+// no piece here (FrontEndPieces judges a cluster's ends by their step alone).
+TEST(SurfaceProtrusionTest, NoSurfaceOnOneSideIsNoPiece) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const auto pts = WallWithLeg(20, kLegLast, 0.08, seed);
+    EXPECT_TRUE(SurfaceProtrusions(pts, Span(0, pts.size()), Limits()).empty()) << "seed " << seed;
+  }
+}
+
+}  // namespace
+}  // namespace shelfdock::perception
