@@ -171,7 +171,7 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
       ->check(NonNegativeInteger());
   cmd->add_option("--class", opt->classes,
                   "only these classes: open row aisle occluded_leg person_beside_leg large_close "
-                  "mixed_neighbours round_noisy clutter");
+                  "mixed_neighbours round_noisy against_wall clutter");
   cmd->add_option("--models", opt->models, "shelf models YAML")->capture_default_str();
   cmd->add_option("--params", opt->params, "detector parameters YAML");
   cmd->add_option("--lidar", opt->lidars,

@@ -70,6 +70,8 @@ void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
   f.Read("leg_bearing_sigma_rad", c.leg_bearing_sigma_rad);
   f.Read("min_leg_sigma_m", c.min_leg_sigma_m);
   f.Read("max_rms_m", c.max_rms_m);
+  f.Read("background_mix_share", c.background_mix_share);
+  f.Read("background_mix_max_m", c.background_mix_max_m);
   f.RejectUnknown();
 }
 

@@ -62,6 +62,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(f.leg_bearing_sigma_rad > 0.0, "shelf_fit.leg_bearing_sigma_rad", "> 0");
   k.Check(f.min_leg_sigma_m > 0.0, "shelf_fit.min_leg_sigma_m", "> 0");
   k.Check(f.max_rms_m > 0.0, "shelf_fit.max_rms_m", "> 0");
+  k.Check(f.background_mix_share >= 0.0, "shelf_fit.background_mix_share", ">= 0");
+  k.Check(f.background_mix_max_m >= 0.0, "shelf_fit.background_mix_max_m", ">= 0 (0: off)");
 
   const auto& e = c.evidence;
   k.Check(e.present_margin_m > 0.0, "evidence.present_margin_m", "> 0");

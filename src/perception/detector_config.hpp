@@ -102,6 +102,10 @@ struct ShelfFitConfig {
   double leg_bearing_sigma_rad = 0.0015;  ///< [rad] its std across the beam, as a bearing
   double min_leg_sigma_m = 0.003;         ///< [m] floor of the per-leg std used for the covariance
   double max_rms_m = 0.03;                ///< [m] legs farther (RMS) from the model: rejected
+  double background_mix_share = 0.25;     ///< [-] the returned pose counts a leg's range as this
+                                          ///< share of the gap to a surface close behind it less
+                                          ///< certain (mixed returns pull it there) ...
+  double background_mix_max_m = 0.3;      ///< [m] ... a surface at most this far behind; 0: off
 };
 
 /// What the scan says about each hypothesis (legs seen, hidden or seen through; free space

@@ -56,11 +56,20 @@ std::optional<Draft> BuildSingle(Context& c, const geometry::ShelfModel& model) 
   return Draft{*T_world_lidar, shelf.id, std::nullopt, -1, {}};
 }
 
-/// A row of `slots` with a wall or rack behind it half of the time, a target drawn from it and
-/// the sensor in front of the row.
-std::optional<Draft> BuildRow(Context& c, const std::vector<RowSlot>& slots) {
+/// A row of `slots` with a wall or rack behind it half of the time (always with
+/// `against_wall`, then a few centimetres behind the back legs), a target drawn from it and the
+/// sensor in front of the row.
+std::optional<Draft> BuildRow(Context& c, const std::vector<RowSlot>& slots,
+                              bool against_wall = false) {
   const LayoutRow row = AddRow(c.builder, c.rng, {}, slots, kFirstRowA, c.config);
-  if (c.rng.Chance(0.5)) AddRackBehind(c.builder, c.rng, row, c.config);
+  if (against_wall) {
+    LayoutConfig close = c.config;
+    close.rack_min_setback_m = c.config.wall_min_setback_m;
+    close.rack_max_setback_m = c.config.wall_max_setback_m;
+    AddRackBehind(c.builder, c.rng, row, close);
+  } else if (c.rng.Chance(0.5)) {
+    AddRackBehind(c.builder, c.rng, row, c.config);
+  }
   const int target_id = row.shelf_ids[c.rng.Index(row.shelf_ids.size())];
   // In front: from the target's centre toward +y of the row, off the normal by up to a limit.
   const SensorBand band{row.T_world_row, c.config.sensor_clearance_m, kUnbounded_m};
@@ -95,6 +104,20 @@ std::optional<Draft> BuildMixedRow(Context& c) {
     slots.push_back({model, c.rng.Chance(0.5)});
   }
   return BuildRow(c, slots);
+}
+
+/// Shelves pushed back against a wall or a rack: one shelf or a row of 3-6 (one model or
+/// mixed), each turned either way, the sensor in front.
+std::optional<Draft> BuildAgainstWall(Context& c) {
+  const int count = c.rng.Chance(0.3) ? 1 : RowCount(c);
+  std::vector<RowSlot> slots;
+  const geometry::ShelfModel* model = &AnyModel(c);
+  const bool mixed = c.rng.Chance(0.5);
+  for (int i = 0; i < count; ++i) {
+    if (mixed && i > 0) model = &AnyModel(c);
+    slots.push_back({model, c.rng.Chance(0.5)});
+  }
+  return BuildRow(c, slots, true);
 }
 
 /// Two rows facing each other across the aisle (row A's frame: x along the aisle, y across
@@ -216,6 +239,8 @@ std::optional<Draft> BuildClass(LayoutClass layout_class, Context& c) {
       return BuildSingleOrRow(c, RoundModel(c.models));
     case LayoutClass::kClutter:
       return BuildClutter(c);
+    case LayoutClass::kAgainstWall:
+      return BuildAgainstWall(c);
   }
   return std::nullopt;
 }

@@ -45,6 +45,8 @@ std::string_view LayoutClassName(LayoutClass layout_class) {
       return "round_noisy";
     case LayoutClass::kClutter:
       return "clutter";
+    case LayoutClass::kAgainstWall:
+      return "against_wall";
   }
   return "unknown";
 }

@@ -28,18 +28,22 @@ enum class LayoutClass {
   kMixedNeighbours,  ///< a row whose neighbours are of different models
   kRoundNoisy,       ///< the round-leg model at the high range noise
   kClutter,          ///< no shelf: leg-like posts, boxes and people
+  /// shelves pushed back against a wall or a rack, a few centimetres behind their back legs
+  /// (after kClutter: a class's value seeds its scenes, so the others keep theirs)
+  kAgainstWall,
 };
 
 /// Every class, in table order.
-inline constexpr std::array<LayoutClass, 9> kAllLayoutClasses = {LayoutClass::kOpen,
-                                                                 LayoutClass::kRow,
-                                                                 LayoutClass::kAisle,
-                                                                 LayoutClass::kOccludedLeg,
-                                                                 LayoutClass::kPersonBesideLeg,
-                                                                 LayoutClass::kLargeClose,
-                                                                 LayoutClass::kMixedNeighbours,
-                                                                 LayoutClass::kRoundNoisy,
-                                                                 LayoutClass::kClutter};
+inline constexpr std::array<LayoutClass, 10> kAllLayoutClasses = {LayoutClass::kOpen,
+                                                                  LayoutClass::kRow,
+                                                                  LayoutClass::kAisle,
+                                                                  LayoutClass::kOccludedLeg,
+                                                                  LayoutClass::kPersonBesideLeg,
+                                                                  LayoutClass::kLargeClose,
+                                                                  LayoutClass::kMixedNeighbours,
+                                                                  LayoutClass::kRoundNoisy,
+                                                                  LayoutClass::kAgainstWall,
+                                                                  LayoutClass::kClutter};
 
 /// The class's name as written in tables and on the command line (`open`, `row`, ...).
 std::string_view LayoutClassName(LayoutClass layout_class);
@@ -92,6 +96,8 @@ struct LayoutConfig {
   double person_clearance_m = 0.5;   ///< [m] people standing in an aisle to the sensor
   double rack_min_setback_m = 0.1;   ///< [m] rack or wall behind a row's back legs
   double rack_max_setback_m = 0.8;   ///< [m]
+  double wall_min_setback_m = 0.02;  ///< [m] against_wall: wall or rack behind the back legs
+  double wall_max_setback_m = 0.12;  ///< [m]
 
   // Legs.
   double leg_min_reflectivity = 0.08;  ///< [0..1] painted steel is dark

@@ -2,6 +2,7 @@
 // (gaps, standoffs, presets, an occluded leg really hidden, a person really beside a leg).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -142,6 +143,53 @@ TEST(LayoutGeneratorTest, RowGapsAndCounts) {
       }
     }
   }
+}
+
+// against_wall: one row (or a lone shelf) with the sensor in front of it and a wall, or a
+// rack's front uprights, wall_min_setback_m..wall_max_setback_m behind its back.
+TEST(LayoutGeneratorTest, AgainstWallPutsAWallJustBehindTheRow) {
+  const auto models = PaperModels();
+  const LayoutConfig config;
+  int racks = 0;
+  int walls = 0;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    const LayoutScene s = GenerateLayoutScene(LayoutClass::kAgainstWall, seed, models, config);
+    ASSERT_EQ(s.rows.size(), 1u) << "seed " << seed;
+    const geometry::Pose2 T_row_world = s.rows[0].T_world_row.inverse();
+    double back = std::numeric_limits<double>::infinity();
+    for (int id : s.rows[0].shelf_ids) {
+      const ShelfInstance shelf = *s.world.Shelf(id);
+      const geometry::Pose2 T_row_shelf = T_row_world * shelf.T_world_shelf;
+      Eigen::Vector2d lo, hi;
+      layout::FootprintExtents(shelf.model, T_row_shelf.yaw, &lo, &hi);
+      back = std::min(back, T_row_shelf.y + lo.y());
+    }
+    auto within = [&](double near_y) {
+      const double gap = back - near_y;
+      return gap >= config.wall_min_setback_m - kEps && gap <= config.wall_max_setback_m + kEps;
+    };
+    bool found = false;
+    for (const Wall& wall : s.world.walls()) {
+      if (wall.closed || wall.points.size() != 2) continue;  // the room
+      const Eigen::Vector2d a = T_row_world * wall.points[0];
+      const Eigen::Vector2d b = T_row_world * wall.points[1];
+      if (std::abs(a.y() - b.y()) < kEps && within(a.y())) {
+        found = true;
+        ++walls;
+      }
+    }
+    for (const Box& box : s.world.boxes()) {
+      const geometry::Pose2 T_row_box = T_row_world * box.T_world_box;
+      if (!found && within(T_row_box.y + 0.5 * box.width_m)) {
+        found = true;
+        ++racks;
+      }
+    }
+    EXPECT_TRUE(found) << "seed " << seed;
+    EXPECT_GT((T_row_world * s.T_world_lidar).y, 0.0) << "seed " << seed;
+  }
+  EXPECT_GT(walls, 0);
+  EXPECT_GT(racks, 0);
 }
 
 // The occluded leg gets fewer than the in-sight beams, whichever leg it is.
