@@ -26,6 +26,52 @@ bool Neighbours(const ScanPoint& a, const ScanPoint& b) {
   return std::abs(b.beam - a.beam) - 1 <= kMaxMissingBeams;
 }
 
+// The points beside [begin, end): up to `count` consecutive beam neighbours on each side,
+// as [before, begin) and [end, after).
+std::size_t ReachBack(const std::vector<ScanPoint>& points, std::size_t begin, int count) {
+  std::size_t i = begin;
+  while (i > 0 && static_cast<int>(begin - i) < count && Neighbours(points[i - 1], points[i])) {
+    --i;
+  }
+  return i;
+}
+std::size_t ReachOn(const std::vector<ScanPoint>& points, std::size_t end, int count) {
+  std::size_t i = end;
+  while (i < points.size() && static_cast<int>(i - end) < count &&
+         Neighbours(points[i - 1], points[i])) {
+    ++i;
+  }
+  return i;
+}
+
+// A quick look first (most pieces a step starts are none: a wall seen at a grazing angle steps
+// at every beam): enough points on both sides, and the piece's mean range in front of the
+// sides' mean ranges interpolated to its middle beam by half the offset StandOut asks for.
+bool MayStandOut(const std::vector<ScanPoint>& points, std::size_t begin, std::size_t end,
+                 const ProtrusionLimits& limits) {
+  const int k = std::max(1, limits.surface_points);
+  const std::size_t before = ReachBack(points, begin, k);
+  const std::size_t after = ReachOn(points, end, k);
+  if (begin - before < kMinSidePoints || after - end < kMinSidePoints) return false;
+  auto mean_of = [&](std::size_t from, std::size_t to, double& range, double& beam) {
+    range = 0.0;
+    beam = 0.0;
+    for (std::size_t i = from; i < to; ++i) {
+      range += points[i].range;
+      beam += points[i].beam;
+    }
+    range /= static_cast<double>(to - from);
+    beam /= static_cast<double>(to - from);
+  };
+  double r_before, b_before, r_after, b_after, r_piece, b_piece;
+  mean_of(before, begin, r_before, b_before);
+  mean_of(end, after, r_after, b_after);
+  mean_of(begin, end, r_piece, b_piece);
+  if (b_after == b_before) return false;
+  const double t = (b_piece - b_before) / (b_after - b_before);
+  return r_before + t * (r_after - r_before) - r_piece >= 0.5 * limits.min_offset_m;
+}
+
 // How far [begin, end) stands out in front of the line through the points beside it, in sigmas
 // of its mean offset; nullopt when the points beside it do not make one surface. The points
 // beside it may lie beyond the cluster: the far point of the step at a leg's edge is often
@@ -33,32 +79,16 @@ bool Neighbours(const ScanPoint& a, const ScanPoint& b) {
 std::optional<double> StandOut(const std::vector<ScanPoint>& points, std::size_t begin,
                                std::size_t end, const ProtrusionLimits& limits) {
   const int k = std::max(1, limits.surface_points);
-  // The points beside the piece: up to `count` consecutive beam neighbours on each side.
-  auto reach_back = [&](int count) {
-    std::size_t i = begin;
-    while (i > 0 && static_cast<int>(begin - i) < count && Neighbours(points[i - 1], points[i])) {
-      --i;
-    }
-    return i;
-  };
-  auto reach_on = [&](int count) {
-    std::size_t i = end;
-    while (i < points.size() && static_cast<int>(i - end) < count &&
-           Neighbours(points[i - 1], points[i])) {
-      ++i;
-    }
-    return i;
-  };
-  const std::size_t before = reach_back(k);
-  const std::size_t after = reach_on(k);
+  const std::size_t before = ReachBack(points, begin, k);
+  const std::size_t after = ReachOn(points, end, k);
   if (begin - before < kMinSidePoints || after - end < kMinSidePoints) return std::nullopt;
   // The surface's line from a wider stretch beside the piece (kLineReach times as many points
   // on each side): a line through a few points either side can tilt to pass between a wall on
   // one side and the rest of a leg on the other, and then a part of the leg stands out from it.
   // The points right beside the piece must lie on that line (below): at the apex of a box's
   // corner or a round object they stand out with the piece.
-  const std::size_t wide_before = reach_back(kLineReach * k);
-  const std::size_t wide_after = reach_on(kLineReach * k);
+  const std::size_t wide_before = ReachBack(points, begin, kLineReach * k);
+  const std::size_t wide_after = ReachOn(points, end, kLineReach * k);
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   int n_wide = 0;
   auto each_wide = [&](auto&& f) {
@@ -116,10 +146,13 @@ std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
   };
   std::vector<Scored> found;
   if (span.size() < 2) return {};
+  const double reach = limits.roi_radius_m + limits.max_extent_m;
+  const double reach2 = reach * reach;
   auto fits = [&](std::size_t a, std::size_t b) {  // [a, b) no wider than a leg
     return (points[b - 1].p - points[a].p).norm() <= limits.max_extent_m;
   };
   auto consider = [&](std::size_t a, std::size_t b, std::optional<Scored>& best) {
+    if (!MayStandOut(points, a, b, limits)) return;
     const auto z = StandOut(points, a, b, limits);
     if (z && *z >= limits.offset_sigmas && (!best || *z > best->z)) best = Scored{{a, b}, *z};
   };
@@ -128,6 +161,7 @@ std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
   for (std::size_t k = std::max<std::size_t>(span.begin, 1); k <= span.end && k < points.size();
        ++k) {
     if (!Neighbours(points[k - 1], points[k])) continue;
+    if (limits.roi_centre && (points[k].p - *limits.roi_centre).squaredNorm() > reach2) continue;
     // A step toward the sensor at k starts a piece [k, j) ...
     if (k < span.end && points[k - 1].range - points[k].range >= limits.min_step_m) {
       std::optional<Scored> best;

@@ -1,7 +1,10 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "perception/preprocess.hpp"
 
@@ -22,6 +25,10 @@ struct ProtrusionLimits {
   double range_noise_m = 0.01;  ///< [m] the scan's range noise
   int surface_points = 4;       ///< [-] points on each side the surface's line is fitted to
   double surface_rms_m = 0.03;  ///< [m] those points lie within this RMS of their line
+  /// Only pieces near here are looked for (the ROI around a preset): steps farther than
+  /// roi_radius_m + max_extent_m from it start none. Empty: anywhere.
+  std::optional<Eigen::Vector2d> roi_centre;
+  double roi_radius_m = 0.0;  ///< [m]
 };
 
 /// Leg-sized pieces inside a cluster that stand out in front of its surface: a leg a few
