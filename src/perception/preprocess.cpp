@@ -13,11 +13,28 @@ namespace shelfdock::perception {
 std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan) {
   std::vector<ScanPoint> out;
   out.reserve(scan.ranges.size());
+  // The cos and sin of each beam's bearing come from the previous beam's, turned by the angle
+  // increment (one complex multiplication instead of a sincos per beam, which was a quarter of a
+  // detection's time on a room's scan), taken exactly every kAnchorBeams beams so that rounding
+  // cannot build up (it stays below 1e-14 of the range).
+  constexpr std::size_t kAnchorBeams = 32;
+  const double cos_step = std::cos(scan.angle_increment);
+  const double sin_step = std::sin(scan.angle_increment);
+  double c = 1.0;
+  double s = 0.0;
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double a = scan.BeamAngle(i);
+    if (i % kAnchorBeams == 0) {
+      c = std::cos(a);
+      s = std::sin(a);
+    } else {
+      const double c_prev = c;
+      c = c_prev * cos_step - s * sin_step;
+      s = s * cos_step + c_prev * sin_step;
+    }
     const double r = scan.ranges[i];
     if (!std::isfinite(r) || r <= 0.0 || r < scan.range_min || r > scan.range_max) continue;
-    const double a = scan.BeamAngle(i);
-    out.push_back({Eigen::Vector2d(r * std::cos(a), r * std::sin(a)), r, a, static_cast<int>(i)});
+    out.push_back({Eigen::Vector2d(r * c, r * s), r, a, static_cast<int>(i)});
   }
   return out;
 }
