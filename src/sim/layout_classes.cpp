@@ -63,12 +63,9 @@ std::optional<Draft> BuildRow(Context& c, const std::vector<RowSlot>& slots,
                               bool against_wall = false) {
   const LayoutRow row = AddRow(c.builder, c.rng, {}, slots, kFirstRowA, c.config);
   if (against_wall) {
-    LayoutConfig close = c.config;
-    close.rack_min_setback_m = c.config.wall_min_setback_m;
-    close.rack_max_setback_m = c.config.wall_max_setback_m;
-    AddRackBehind(c.builder, c.rng, row, close);
+    AddRackBehind(c.builder, c.rng, row, c.config.wall_min_setback_m, c.config.wall_max_setback_m);
   } else if (c.rng.Chance(0.5)) {
-    AddRackBehind(c.builder, c.rng, row, c.config);
+    AddRackBehind(c.builder, c.rng, row, c.config.rack_min_setback_m, c.config.rack_max_setback_m);
   }
   const int target_id = row.shelf_ids[c.rng.Index(row.shelf_ids.size())];
   // In front: from the target's centre toward +y of the row, off the normal by up to a limit.
@@ -136,8 +133,8 @@ std::optional<Draft> BuildAisle(Context& c) {
   const int count_b = count();
   const auto slots_b = UniformRow(model_b, count_b, c.rng.Chance(0.5));
   const LayoutRow row_b = AddRow(c.builder, c.rng, T_world_row_b, slots_b, kFirstRowB, c.config);
-  AddRackBehind(c.builder, c.rng, row_a, c.config);
-  AddRackBehind(c.builder, c.rng, row_b, c.config);
+  AddRackBehind(c.builder, c.rng, row_a, c.config.rack_min_setback_m, c.config.rack_max_setback_m);
+  AddRackBehind(c.builder, c.rng, row_b, c.config.rack_min_setback_m, c.config.rack_max_setback_m);
 
   const LayoutRow& row = c.rng.Chance(0.5) ? row_a : row_b;
   const int target_id = row.shelf_ids[c.rng.Index(row.shelf_ids.size())];

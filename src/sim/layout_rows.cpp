@@ -125,11 +125,11 @@ LayoutRow AddRow(SceneBuilder& builder, SceneRng& rng, const geometry::Pose2& T_
   return row;
 }
 
-void AddRackBehind(SceneBuilder& builder, SceneRng& rng, const LayoutRow& row,
-                   const LayoutConfig& config) {
+void AddRackBehind(SceneBuilder& builder, SceneRng& rng, const LayoutRow& row, double min_setback_m,
+                   double max_setback_m) {
   Eigen::Vector2d lo, hi;
   RowExtents(builder.world(), row, &lo, &hi);
-  const double front_y = lo.y() - rng.Uniform(config.rack_min_setback_m, config.rack_max_setback_m);
+  const double front_y = lo.y() - rng.Uniform(min_setback_m, max_setback_m);
   const double x0 = lo.x() - rng.Uniform(kRackMinOverhang_m, kRackMaxOverhang_m);
   const double x1 = hi.x() + rng.Uniform(kRackMinOverhang_m, kRackMaxOverhang_m);
   if (rng.Chance(0.5)) {

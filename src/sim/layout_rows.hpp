@@ -32,9 +32,10 @@ Material DrawLegMaterial(SceneRng& rng, const LayoutConfig& config);
 LayoutRow AddRow(SceneBuilder& builder, SceneRng& rng, const geometry::Pose2& T_world_row,
                  const std::vector<RowSlot>& slots, int first_id, const LayoutConfig& config);
 
-/// A wall, or a pallet rack (square uprights, pallets, a back wall), behind a row's back legs.
-void AddRackBehind(SceneBuilder& builder, SceneRng& rng, const LayoutRow& row,
-                   const LayoutConfig& config);
+/// A wall, or a pallet rack (square uprights, pallets, a back wall), behind a row's back legs,
+/// its front a drawn min_setback_m..max_setback_m behind them.
+void AddRackBehind(SceneBuilder& builder, SceneRng& rng, const LayoutRow& row, double min_setback_m,
+                   double max_setback_m);
 
 /// Four walls around everything placed so far (and the discs kept free), axis-aligned in the
 /// world frame, each 0.3-4 m beyond it.
