@@ -234,6 +234,7 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
   protrusion.range_noise_m = std::max(out.range_noise_m, kMinProtrusionNoise_m);
   protrusion.surface_points = config.inner_surface_points;
   protrusion.surface_rms_m = surface_tolerance;
+  protrusion.max_missing_beams = config.cluster_max_missing_beams;
   if (T_lidar_preset) {
     protrusion.roi_centre = T_lidar_preset->translation();
     protrusion.roi_radius_m = roi_radius;

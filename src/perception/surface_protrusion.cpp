@@ -18,41 +18,57 @@ constexpr std::size_t kMinSidePoints = 3;
 // The surface's line comes from this many times surface_points on each side.
 constexpr int kLineReach = 3;
 
-// Beam neighbours: consecutive valid points with at most this many beams without a return
-// between them (dark patches drop some).
-constexpr int kMaxMissingBeams = 3;
-
-bool Neighbours(const ScanPoint& a, const ScanPoint& b) {
-  return std::abs(b.beam - a.beam) - 1 <= kMaxMissingBeams;
+// Beam neighbours: consecutive valid points with at most max_missing_beams beams without a
+// return between them (dark patches drop some).
+bool Neighbours(const ScanPoint& a, const ScanPoint& b, const ProtrusionLimits& limits) {
+  return std::abs(b.beam - a.beam) - 1 <= limits.max_missing_beams;
 }
 
 // The points beside [begin, end): up to `count` consecutive beam neighbours on each side,
 // as [before, begin) and [end, after).
-std::size_t ReachBack(const std::vector<ScanPoint>& points, std::size_t begin, int count) {
+std::size_t ReachBack(const std::vector<ScanPoint>& points, std::size_t begin, int count,
+                      const ProtrusionLimits& limits) {
   std::size_t i = begin;
-  while (i > 0 && static_cast<int>(begin - i) < count && Neighbours(points[i - 1], points[i])) {
+  while (i > 0 && static_cast<int>(begin - i) < count &&
+         Neighbours(points[i - 1], points[i], limits)) {
     --i;
   }
   return i;
 }
-std::size_t ReachOn(const std::vector<ScanPoint>& points, std::size_t end, int count) {
+std::size_t ReachOn(const std::vector<ScanPoint>& points, std::size_t end, int count,
+                    const ProtrusionLimits& limits) {
   std::size_t i = end;
   while (i < points.size() && static_cast<int>(i - end) < count &&
-         Neighbours(points[i - 1], points[i])) {
+         Neighbours(points[i - 1], points[i], limits)) {
     ++i;
   }
   return i;
 }
 
-// A quick look first (most pieces a step starts are none: a wall seen at a grazing angle steps
-// at every beam): enough points on both sides, and the piece's mean range in front of the
-// sides' mean ranges interpolated to its middle beam by half the offset StandOut asks for.
-bool MayStandOut(const std::vector<ScanPoint>& points, std::size_t begin, std::size_t end,
-                 const ProtrusionLimits& limits) {
+// A piece [begin, end) and the surface_points right beside it, [before, begin) and
+// [end, after).
+struct Beside {
+  std::size_t before = 0;
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  std::size_t after = 0;
+};
+
+// The piece with the points right beside it; nullopt when either side has fewer than
+// kMinSidePoints.
+std::optional<Beside> PointsBeside(const std::vector<ScanPoint>& points, std::size_t begin,
+                                   std::size_t end, const ProtrusionLimits& limits) {
   const int k = std::max(1, limits.surface_points);
-  const std::size_t before = ReachBack(points, begin, k);
-  const std::size_t after = ReachOn(points, end, k);
-  if (begin - before < kMinSidePoints || after - end < kMinSidePoints) return false;
+  const Beside b{ReachBack(points, begin, k, limits), begin, end, ReachOn(points, end, k, limits)};
+  if (b.begin - b.before < kMinSidePoints || b.after - b.end < kMinSidePoints) return std::nullopt;
+  return b;
+}
+
+// A quick look first (most pieces a step starts are none: a wall seen at a grazing angle steps
+// at every beam): the piece's mean range in front of the sides' mean ranges interpolated to its
+// middle beam by half the offset StandOut asks for.
+bool MayStandOut(const std::vector<ScanPoint>& points, const Beside& side,
+                 const ProtrusionLimits& limits) {
   auto mean_of = [&](std::size_t from, std::size_t to, double& range, double& beam) {
     range = 0.0;
     beam = 0.0;
@@ -64,9 +80,9 @@ bool MayStandOut(const std::vector<ScanPoint>& points, std::size_t begin, std::s
     beam /= static_cast<double>(to - from);
   };
   double r_before, b_before, r_after, b_after, r_piece, b_piece;
-  mean_of(before, begin, r_before, b_before);
-  mean_of(end, after, r_after, b_after);
-  mean_of(begin, end, r_piece, b_piece);
+  mean_of(side.before, side.begin, r_before, b_before);
+  mean_of(side.end, side.after, r_after, b_after);
+  mean_of(side.begin, side.end, r_piece, b_piece);
   if (b_after == b_before) return false;
   const double t = (b_piece - b_before) / (b_after - b_before);
   return r_before + t * (r_after - r_before) - r_piece >= 0.5 * limits.min_offset_m;
@@ -76,19 +92,17 @@ bool MayStandOut(const std::vector<ScanPoint>& points, std::size_t begin, std::s
 // of its mean offset; nullopt when the points beside it do not make one surface. The points
 // beside it may lie beyond the cluster: the far point of the step at a leg's edge is often
 // dropped as a mixed point, which breaks the cluster there.
-std::optional<double> StandOut(const std::vector<ScanPoint>& points, std::size_t begin,
-                               std::size_t end, const ProtrusionLimits& limits) {
+std::optional<double> StandOut(const std::vector<ScanPoint>& points, const Beside& side,
+                               const ProtrusionLimits& limits) {
   const int k = std::max(1, limits.surface_points);
-  const std::size_t before = ReachBack(points, begin, k);
-  const std::size_t after = ReachOn(points, end, k);
-  if (begin - before < kMinSidePoints || after - end < kMinSidePoints) return std::nullopt;
+  const auto [before, begin, end, after] = side;
   // The surface's line from a wider stretch beside the piece (kLineReach times as many points
   // on each side): a line through a few points either side can tilt to pass between a wall on
   // one side and the rest of a leg on the other, and then a part of the leg stands out from it.
   // The points right beside the piece must lie on that line (below): at the apex of a box's
   // corner or a round object they stand out with the piece.
-  const std::size_t wide_before = ReachBack(points, begin, kLineReach * k);
-  const std::size_t wide_after = ReachOn(points, end, kLineReach * k);
+  const std::size_t wide_before = ReachBack(points, begin, kLineReach * k, limits);
+  const std::size_t wide_after = ReachOn(points, end, kLineReach * k, limits);
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   int n_wide = 0;
   auto each_wide = [&](auto&& f) {
@@ -152,15 +166,16 @@ std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
     return (points[b - 1].p - points[a].p).norm() <= limits.max_extent_m;
   };
   auto consider = [&](std::size_t a, std::size_t b, std::optional<Scored>& best) {
-    if (!MayStandOut(points, a, b, limits)) return;
-    const auto z = StandOut(points, a, b, limits);
+    const auto side = PointsBeside(points, a, b, limits);
+    if (!side || !MayStandOut(points, *side, limits)) return;
+    const auto z = StandOut(points, *side, limits);
     if (z && *z >= limits.offset_sigmas && (!best || *z > best->z)) best = Scored{{a, b}, *z};
   };
   // A boundary k lies between points k - 1 and k; the pieces lie inside the span, the steps
   // that start or end them may cross its ends (a cluster break).
   for (std::size_t k = std::max<std::size_t>(span.begin, 1); k <= span.end && k < points.size();
        ++k) {
-    if (!Neighbours(points[k - 1], points[k])) continue;
+    if (!Neighbours(points[k - 1], points[k], limits)) continue;
     if (limits.roi_centre && (points[k].p - *limits.roi_centre).squaredNorm() > reach2) continue;
     // A step toward the sensor at k starts a piece [k, j) ...
     if (k < span.end && points[k - 1].range - points[k].range >= limits.min_step_m) {

@@ -25,6 +25,8 @@ struct ProtrusionLimits {
   double range_noise_m = 0.01;  ///< [m] the scan's range noise
   int surface_points = 4;       ///< [-] points on each side the surface's line is fitted to
   double surface_rms_m = 0.03;  ///< [m] those points lie within this RMS of their line
+  int max_missing_beams = 3;    ///< [-] beams without a return between two points of a surface
+                                ///< (PreprocessConfig::cluster_max_missing_beams)
   /// Only pieces near here are looked for (the ROI around a preset): steps farther than
   /// roi_radius_m + max_extent_m from it start none. Empty: anywhere.
   std::optional<Eigen::Vector2d> roi_centre;
