@@ -49,8 +49,7 @@ struct TargetBox {
 /// would leave room for the robot (config/scenarios/against_wall.yaml, 50 runs: 3 such
 /// failures). The docking stage's live checks and the detections place the shelf and what
 /// stands around it.
-FreeSpace MapAwayFromTarget(const DockingTask& task, const DockingConfig& config) {
-  const TargetBox box(task, config);
+FreeSpace MapAwayFromTarget(const DockingTask& task, const TargetBox& box) {
   FreeSpace space;
   for (const LegDisc& disc : task.map_obstacles.obstacles) {
     if (!box.Contains(disc.centre)) space.obstacles.push_back(disc);
@@ -63,10 +62,10 @@ FreeSpace MapAwayFromTarget(const DockingTask& task, const DockingConfig& config
 /// from the preset and later from detections.
 FreeSpace ApproachFreeSpace(const DockingTask& task, const DockingConfig& config,
                             const Observations& obs) {
-  FreeSpace space = MapAwayFromTarget(task, config);
+  const TargetBox box(task, config);
+  FreeSpace space = MapAwayFromTarget(task, box);
   if (obs.scan == nullptr) return space;
   constexpr double kPointRadius_m = 0.02;
-  const TargetBox box(task, config);
   const Pose2 T_map_lidar = obs.T_map_base_estimate * config.T_base_lidar;
   const geometry::LaserScan& scan = *obs.scan;
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
@@ -113,7 +112,7 @@ void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
   if (!approach_.plan.ok) {
     // What the scan shows may be passing (a person): plan on the map alone, and let the live
     // checks (the approach's re-planning, the docking stage's obstacle stop) deal with it.
-    FreeSpace map_only = MapAwayFromTarget(task_, config_);
+    FreeSpace map_only = MapAwayFromTarget(task_, TargetBox(task_, config_));
     for (const LegDisc& leg : LegDiscs(task_.model, task_.T_map_shelf_preset)) {
       map_only.obstacles.push_back(leg);
     }

@@ -127,9 +127,10 @@ std::array<LegSigma, 4> LegSigmas(const std::array<Eigen::Vector2d, 4>& legs, co
     if (with_background) {
       const ShelfFitConfig& sf = in.config.shelf_fit;
       std::optional<double> gap;
-      for (const auto& step : {c.edges.before_step_m, c.edges.after_step_m}) {
-        if (step && *step > 0.0 && *step <= sf.background_mix_max_m && (!gap || *step < *gap)) {
-          gap = step;
+      for (const auto& behind : {c.edges.before_step_m, c.edges.after_step_m}) {
+        if (behind && *behind > 0.0 && *behind <= sf.background_mix_max_m &&
+            (!gap || *behind < *gap)) {
+          gap = behind;
         }
       }
       if (gap) mix2 = std::pow(sf.background_mix_share * *gap, 2);
