@@ -137,5 +137,30 @@ TEST(LidarConfigYamlTest, PresetsLoadAndBadKeysAreNamed) {
   EXPECT_THROW(ReadLidarConfig(unknown), InputError);
 }
 
+// The sensor variants (config/lidar_variants, README "On a sensor unlike our model") keep the
+// WLR-716's geometry and change only how returns are made: each must load and differ from the
+// WLR-716 in its beam, echo, noise or dropout model, or the robustness figures measure nothing.
+TEST(LidarConfigYamlTest, SensorVariantsKeepTheGeometryAndChangeTheReturns) {
+  const auto wlr = ReadLidarConfig(kRoot + "/config/lidar_wlr716.yaml");
+  int variants = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(kRoot + "/config/lidar_variants")) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().string());
+    const auto v = ReadLidarConfig(entry.path().string());
+    EXPECT_EQ(v.num_beams, wlr.num_beams);
+    EXPECT_DOUBLE_EQ(v.angle_min_rad, wlr.angle_min_rad);
+    EXPECT_DOUBLE_EQ(v.angle_increment_rad, wlr.angle_increment_rad);
+    const bool differs = v.echo_separation_m != wlr.echo_separation_m ||
+                         v.beam_divergence_rad != wlr.beam_divergence_rad ||
+                         v.footprint_rays != wlr.footprint_rays ||
+                         v.range_noise_sigma_m != wlr.range_noise_sigma_m ||
+                         v.range_noise_per_m != wlr.range_noise_per_m ||
+                         v.dropout_probability != wlr.dropout_probability;
+    EXPECT_TRUE(differs);
+    ++variants;
+  }
+  EXPECT_GE(variants, 6);
+}
+
 }  // namespace
 }  // namespace shelfdock::io
