@@ -159,7 +159,7 @@ TEST(LidarConfigYamlTest, SensorVariantsKeepTheGeometryAndChangeTheReturns) {
     EXPECT_TRUE(differs);
     ++variants;
   }
-  EXPECT_GE(variants, 6);
+  EXPECT_GE(variants, 7);
 }
 
 }  // namespace
