@@ -1,8 +1,8 @@
 // `shelfdock eval-layouts`: runs the detector over generated warehouse scenes (rows, aisles,
 // occluders, people, clutter; sim::GenerateLayoutScene) and prints a table per class and
 // overall, then one line per failing scene. A measurement: exit 0 whatever the figures, 2 on
-// bad input. --dump-failures writes each failing scene's scan and truth so that the printed
-// `shelfdock detect` line reproduces it.
+// bad input. --dump-failures writes each failing scene's (with --dump-all every scene's) scan and
+// truth so that the printed `shelfdock detect` line reproduces it.
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +39,7 @@ struct EvalLayoutsOptions {
   std::vector<std::string> lidars;
   std::string json;
   std::string dump_failures;
+  bool dump_all = false;  // --dump-failures writes every scene, not only the failing ones
   bool no_preset = false;
 };
 
@@ -90,13 +91,14 @@ void DumpFailures(const EvalLayoutsOptions& opt, const std::vector<geometry::She
   if (!opt.params.empty()) detect_args += " --params " + opt.params;
   int written = 0;
   for (const auto& r : results) {
-    if (!r.Failed()) continue;
+    if (!r.Failed() && !opt.dump_all) continue;
     sim::LayoutScene scene = sim::GenerateLayoutScene(r.layout_class, r.seed, models, layout);
     if (opt.no_preset) scene.T_world_preset.reset();  // the detect line then has no --preset
     io::WriteLayoutFailure(opt.dump_failures, scene, r, detect_args);
     ++written;
   }
-  std::cout << "failing scenes written to " << opt.dump_failures << ": " << written << "\n";
+  std::cout << (opt.dump_all ? "scenes" : "failing scenes") << " written to " << opt.dump_failures
+            << ": " << written << "\n";
 }
 
 int RunEvalLayouts(const EvalLayoutsOptions& opt) {
@@ -181,8 +183,13 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
                 "detect without the map's preset (a robot that searches, e.g. after a restart): "
                 "with neighbours about, the first detection is then often another shelf");
   cmd->add_option("--json", opt->json, "write the table and the failures as JSON");
-  cmd->add_option("--dump-failures", opt->dump_failures,
-                  "write each failing scene's scan and truth (with a detect command) here");
+  auto* dump =
+      cmd->add_option("--dump-failures", opt->dump_failures,
+                      "write each failing scene's scan and truth (with a detect command) here");
+  cmd->add_flag("--dump-all", opt->dump_all,
+                "with --dump-failures, write every scene, right ones too (e.g. to compare fitted "
+                "legs with the truth through detect --explain)")
+      ->needs(dump);
   cmd->callback([opt, exit_code] { *exit_code = RunEvalLayouts(*opt); });
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """`shelfdock eval-layouts` through the CLI: the table and JSON come out, bad input exits 2, and
-every dumped failing scene is reproduced by the `shelfdock detect` command written beside it
-(same first detection, or none). Usage: eval_layouts_cli_test.py SHELFDOCK SOURCE WORK
+every dumped failing scene (with --dump-all every scene) is reproduced by the `shelfdock detect`
+command written beside it (same first detection, or none). Usage: eval_layouts_cli_test.py SHELFDOCK SOURCE WORK
 """
 import json
 import shlex
@@ -48,6 +48,19 @@ def main():
     for t in truths:
         check_reproduction(shelfdock, source, t)
     print(f"eval-layouts: {len(truths)} failing scenes reproduced by detect")
+
+    # --dump-all: every scene, right ones too, each reproduced the same way.
+    every = work / "layout_scenes"
+    shutil.rmtree(every, ignore_errors=True)
+    r = run(shelfdock, ["eval-layouts", "--scenes-per-class", "6", "--class", "open",
+                        "--dump-failures", str(every), "--dump-all"], source)
+    assert r.returncode == 0, f"eval-layouts --dump-all: exit {r.returncode}\n{r.stderr}"
+    truths = sorted(every.glob("*.truth.json"))
+    assert len(truths) == 6, f"{len(truths)} scenes dumped of 6"
+    assert any(json.loads(t.read_text())["outcome"] == "right-first" for t in truths)
+    for t in truths:
+        check_reproduction(shelfdock, source, t)
+    expect_bad_input(shelfdock, source, ["eval-layouts", "--dump-all"], "--dump-failures")
 
     expect_bad_input(shelfdock, source, ["eval-layouts", "--class", "warehouse"], "--class")
     expect_bad_input(shelfdock, source, ["eval-layouts", "--scenes-per-class", "0"],
