@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev libapriltag-dev
   librosbag-storage-dev libsensor-msgs-dev pluginlib-dev
   chromium
-  pybind11-dev python3-dev python3-numpy python3-pytest
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-yaml
 )
 # Node.js and npm run the browser tests (tests/browser). A machine may already have them from
 # elsewhere (e.g. NodeSource's nodejs, which bundles npm): take Debian's only when none is there.

@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Fitted leg centres against the simulated truth, by returns per leg.
+
+Reads the scenes `shelfdock eval-layouts --dump-failures DIR --dump-all` wrote (each scan with its
+truth and the `detect` command that reproduces it), runs each scan through the Python module with
+`explain=True` and, for every hypothesis of the target's own model whose legs all lie within
+`--match` of distinct true corners, compares each fitted leg with its corner: the error along the
+leg's beam and across it, grouped by the leg's returns (scan points within 35 mm of the fitted
+centre) and the scene's range noise, beside the bound sigma / sqrt(returns) that no fit of those
+returns can beat (README, "The close models"). Also the fitted distance between legs along the
+model's width and length against the true one.
+
+usage: leg_errors.py DIR [--models config/models.yaml] [--params FILE] [--module-dir build/python]
+                         [--match 0.06] [--json OUT]
+"""
+import argparse
+import glob
+import json
+import math
+import os
+import re
+import sys
+from collections import defaultdict
+
+import numpy as np
+import yaml
+
+
+def corners(model, shelf):
+    """The four leg centres of `shelf` (x, y, yaw) in its frame's order: +L/2+W/2, +L/2-W/2, ..."""
+    half_l, half_w = 0.5 * model["length"], 0.5 * model["width"]
+    c, s = math.cos(shelf["yaw"]), math.sin(shelf["yaw"])
+    return [np.array([shelf["x"] + c * u - s * v, shelf["y"] + s * u + c * v])
+            for u, v in [(half_l, half_w), (half_l, -half_w), (-half_l, -half_w), (-half_l, half_w)]]
+
+
+def scan_points(scan):
+    ranges = np.array([math.nan if r is None else r for r in scan["ranges"]], dtype=float)
+    angles = scan["angle_min"] + np.arange(len(ranges)) * scan["angle_increment"]
+    return ranges, np.stack([ranges * np.cos(angles), ranges * np.sin(angles)], axis=1)
+
+
+def measure(dump_dir, detector, model_sizes, match_m):
+    """Per leg: (noise sigma, returns, along error, across error, range); per edge: (kind, error)."""
+    legs, edges = [], []
+    for truth_file in sorted(glob.glob(os.path.join(dump_dir, "*.truth.json"))):
+        truth = json.load(open(truth_file))
+        target = truth.get("target")
+        if not target or not truth.get("findable"):
+            continue
+        scan = json.load(open(truth_file.replace(".truth.json", ".scan.json")))
+        preset = re.search(r"--preset ([-0-9.e]+),([-0-9.e]+),([-0-9.e]+)", truth["detect"])
+        ranges, points = scan_points(scan)
+        out = detector.detect(ranges, scan["angle_min"], scan["angle_increment"],
+                              tuple(float(v) for v in preset.groups()) if preset else None,
+                              scan["range_min"], scan["range_max"], True)
+        true_corners = corners(model_sizes[target["model"]], target)
+        for h in out["hypotheses"]:
+            if h["model"] != target["model"] or h["verdict"] not in ("returned", "model"):
+                continue
+            fitted = [np.array(leg) for leg in h["legs"]]
+            which = []
+            for leg in fitted:
+                d = [np.linalg.norm(leg - c) for c in true_corners]
+                which.append(int(np.argmin(d)) if min(d) <= match_m else -1)
+            if -1 in which or len(set(which)) != len(which):
+                continue
+            for leg, k in zip(fitted, which):
+                err = leg - true_corners[k]
+                view = true_corners[k] / np.linalg.norm(true_corners[k])
+                returns = int(np.sum(np.linalg.norm(points - leg, axis=1) < 0.035))
+                legs.append((truth["noise_sigma_m"], returns, float(err @ view),
+                             float(view[0] * err[1] - view[1] * err[0]),
+                             float(np.linalg.norm(true_corners[k]))))
+            for a in range(len(which)):
+                for b in range(a + 1, len(which)):
+                    ka, kb = which[a], which[b]
+                    if (ka - kb) % 2 == 0:
+                        continue  # a diagonal
+                    kind = "width" if {ka, kb} in ({0, 1}, {2, 3}) else "length"
+                    edges.append((kind, float(np.linalg.norm(fitted[a] - fitted[b]) -
+                                              np.linalg.norm(true_corners[ka] - true_corners[kb]))))
+            break  # one hypothesis per scene: the first of the target's model that matches
+    return legs, edges
+
+
+def summarise(legs, edges, min_legs=20):
+    rows = []
+    groups = defaultdict(list)
+    for sigma, n, along, across, _ in legs:
+        groups[(sigma, n)].append((along, across))
+    for (sigma, n), errs in sorted(groups.items()):
+        if len(errs) < min_legs:
+            continue
+        e = np.array(errs)
+        rows.append({"noise_sigma_m": sigma, "returns": n, "legs": len(e),
+                     "along_mean_m": float(e[:, 0].mean()), "along_std_m": float(e[:, 0].std()),
+                     "bound_m": sigma / math.sqrt(n), "across_std_m": float(e[:, 1].std())})
+    edge_rows = []
+    for kind in ("width", "length"):
+        e = np.array([d for k, d in edges if k == kind])
+        if len(e):
+            edge_rows.append({"edge": kind, "count": len(e), "mean_m": float(e.mean()),
+                              "std_m": float(e.std())})
+    return rows, edge_rows
+
+
+def fail(message):
+    """Bad input: the message on stderr, exit 2 (as the CLI does)."""
+    print(f"leg_errors.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("dump_dir")
+    parser.add_argument("--models", default="config/models.yaml")
+    parser.add_argument("--params", default=None)
+    parser.add_argument("--module-dir", default="build/python")
+    parser.add_argument("--match", type=float, default=0.06,
+                        help="a fitted leg within this of a true corner is that corner's [m]")
+    parser.add_argument("--json", default=None, help="also write the tables here")
+    args = parser.parse_args()
+    if not glob.glob(os.path.join(args.dump_dir, "*.truth.json")):
+        fail(f"{args.dump_dir}: no *.truth.json scenes (write them with eval-layouts "
+             "--dump-failures DIR --dump-all)")
+    if not os.path.isfile(args.models):
+        fail(f"{args.models}: no such models file (--models)")
+    sys.path.insert(0, args.module_dir)
+    import shelfdock  # noqa: E402  (the built module, found through --module-dir)
+
+    detector = shelfdock.Detector(args.models, args.params)
+    with open(args.models) as f:
+        model_sizes = {m["name"]: m for m in yaml.safe_load(f)["models"]}
+    legs, edges = measure(args.dump_dir, detector, model_sizes, args.match)
+    rows, edge_rows = summarise(legs, edges)
+    print("noise  returns  legs  along mean / std [mm]  sigma/sqrt(n) [mm]  ratio  across std [mm]")
+    for r in rows:
+        print("%4.0f mm %6d %6d %10.1f / %4.1f %14.1f %12.2f %10.1f" % (
+            1e3 * r["noise_sigma_m"], r["returns"], r["legs"], 1e3 * r["along_mean_m"],
+            1e3 * r["along_std_m"], 1e3 * r["bound_m"], r["along_std_m"] / r["bound_m"],
+            1e3 * r["across_std_m"]))
+    for e in edge_rows:
+        print("%s edges: %d, fitted minus true: mean %+.1f mm, std %.1f mm" % (
+            e["edge"], e["count"], 1e3 * e["mean_m"], 1e3 * e["std_m"]))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({"legs": rows, "edges": edge_rows}, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
