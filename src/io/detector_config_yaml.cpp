@@ -88,6 +88,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("fit_chi2_four_legs", c.fit_chi2_four_legs);
   f.Read("interior_scale_points", c.interior_scale_points);
   f.Read("foreign_leg_points", c.foreign_leg_points);
+  f.Read("foreign_legs_excused", c.foreign_legs_excused);
   f.Read("object_point_weight", c.object_point_weight);
   f.Read("object_point_spacing_m", c.object_point_spacing_m);
   f.Read("leg_size_margin_m", c.leg_size_margin_m);

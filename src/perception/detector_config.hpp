@@ -129,6 +129,10 @@ struct EvidenceConfig {
   double fit_chi2_four_legs = 12.0;       ///< [-] the same for four legs
   double interior_scale_points = 4.0;     ///< [-] points inside the footprint that halve it
   double foreign_leg_points = 6.0;        ///< [-] a leg-sized cluster inside counts as this many
+  int foreign_legs_excused = 1;           ///< [-] legs of other sets inside that do not count
+                                          ///< when four legs measured by their own returns and
+                                          ///< the map vouch for the shelf (a person under its
+                                          ///< edge); 0: every one counts
   double object_point_weight = 0.25;      ///< [-] weight of an interior point of a larger object
   double object_point_spacing_m = 0.01;   ///< [m] an object's interior return counts as one point
                                           ///< per this much beam spacing at most: a near object's

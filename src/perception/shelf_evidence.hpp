@@ -25,9 +25,10 @@ enum class LegView {
 struct ShelfEvidence {
   std::array<LegView, 4> legs{LegView::kUnobserved, LegView::kUnobserved, LegView::kUnobserved,
                               LegView::kUnobserved};  ///< per model corner (LegCentres order)
-  int legs_seen = 0;                                  ///< kSeen + kPresent
-  int legs_occluded = 0;                              ///< kOccluded
-  int legs_seen_through = 0;                          ///< kSeenThrough
+  int legs_measured = 0;  ///< own candidates placed by their own returns (no blend's assumed range)
+  int legs_seen = 0;      ///< kSeen + kPresent
+  int legs_occluded = 0;  ///< kOccluded
+  int legs_seen_through = 0;  ///< kSeenThrough
   /// Of legs_occluded, those hidden (also) by something that is not one of its own legs.
   int legs_hidden_by_other = 0;
   /// Of the unobserved legs, those whose bearing lies inside the scan's field of view (between
