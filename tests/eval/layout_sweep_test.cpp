@@ -326,7 +326,9 @@ TEST(LayoutSceneTest, AForeignLegInsideCountsWhenALegIsOnlyBlended) {
   ASSERT_EQ(r.size(), 1u);
   ASSERT_EQ(r[0].lidar_name, "wlr-716");
   EXPECT_EQ(r[0].phantoms, 0);
-  if (r[0].first) EXPECT_LE(r[0].first->nearest_shelf_m, config.phantom_radius_m);
+  if (r[0].first) {
+    EXPECT_LE(r[0].first->nearest_shelf_m, config.phantom_radius_m);
+  }
 }
 
 // Shelves against a wall seen by the TiM571 (its wide beam mixes the wall into the back legs'
