@@ -34,6 +34,12 @@ def corners(model, shelf):
             for u, v in [(half_l, half_w), (half_l, -half_w), (-half_l, -half_w), (-half_l, half_w)]]
 
 
+def read_model_sizes(models_file):
+    """Each shelf model of a models YAML (config/models.yaml) by name: its length and width."""
+    with open(models_file) as f:
+        return {m["name"]: m for m in yaml.safe_load(f)["models"]}
+
+
 def scan_points(scan):
     ranges = np.array([math.nan if r is None else r for r in scan["ranges"]], dtype=float)
     angles = scan["angle_min"] + np.arange(len(ranges)) * scan["angle_increment"]
@@ -130,9 +136,7 @@ def main():
     import shelfdock  # noqa: E402  (the built module, found through --module-dir)
 
     detector = shelfdock.Detector(args.models, args.params)
-    with open(args.models) as f:
-        model_sizes = {m["name"]: m for m in yaml.safe_load(f)["models"]}
-    legs, edges = measure(args.dump_dir, detector, model_sizes, args.match)
+    legs, edges = measure(args.dump_dir, detector, read_model_sizes(args.models), args.match)
     rows, edge_rows = summarise(legs, edges)
     print("noise  returns  legs  along mean / std [mm]  sigma/sqrt(n) [mm]  ratio  across std [mm]")
     for r in rows:

@@ -55,6 +55,15 @@ sim::LayoutConfig LayoutWithPresets() {
   return layout;
 }
 
+// The sweep over one generated scene: class `layout_class`, seed `seed` (the issue's radii).
+LayoutSweepConfig OneScene(sim::LayoutClass layout_class, std::uint64_t seed) {
+  LayoutSweepConfig config;
+  config.classes = {layout_class};
+  config.seed0 = seed;
+  config.scenes_per_class = 1;
+  return config;
+}
+
 TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
@@ -239,10 +248,7 @@ TEST(LayoutSceneTest, TwoFarLegsEachSeenOnlyBlendedCompleteTheShelf) {
 TEST(LayoutSceneTest, LegsThatMayBeBlendsAndLookTooThinMakeNoPhantom) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
-  LayoutSweepConfig config;  // the issue's phantom radius
-  config.classes = {sim::LayoutClass::kAisle};
-  config.seed0 = 149;
-  config.scenes_per_class = 1;
+  const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAisle, 149);  // the issue's radius
   const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
   ASSERT_EQ(with.size(), 1u);
   ASSERT_EQ(with[0].lidar_name, "tim571");
@@ -264,10 +270,7 @@ TEST(LayoutSceneTest, LegsThatMayBeBlendsAndLookTooThinMakeNoPhantom) {
 TEST(LayoutSceneTest, LegsJustInFrontOfAWallAreCutOutOfIt) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
-  LayoutSweepConfig config;
-  config.classes = {sim::LayoutClass::kAgainstWall};
-  config.seed0 = 174;
-  config.scenes_per_class = 1;
+  const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAgainstWall, 174);
   const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
   ASSERT_EQ(with.size(), 1u);
   ASSERT_EQ(with[0].lidar_name, "wlr-716");
@@ -293,10 +296,7 @@ TEST(LayoutSceneTest, APersonUnderAShelfsEdgeDoesNotHideIt) {
   const sim::LayoutConfig layout = LayoutWithPresets();
   for (const std::uint64_t seed : {243u, 339u}) {
     SCOPED_TRACE(seed);
-    LayoutSweepConfig config;
-    config.classes = {sim::LayoutClass::kPersonBesideLeg};
-    config.seed0 = seed;
-    config.scenes_per_class = 1;
+    const LayoutSweepConfig config = OneScene(sim::LayoutClass::kPersonBesideLeg, seed);
     const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
     ASSERT_EQ(with.size(), 1u);
     EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
@@ -318,10 +318,7 @@ TEST(LayoutSceneTest, APersonUnderAShelfsEdgeDoesNotHideIt) {
 // leg counts, and nothing more than 5 cm from a true shelf is returned.
 TEST(LayoutSceneTest, AForeignLegInsideCountsWhenALegIsOnlyBlended) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  LayoutSweepConfig config;
-  config.classes = {sim::LayoutClass::kMixedNeighbours};
-  config.seed0 = 20266;
-  config.scenes_per_class = 1;
+  const LayoutSweepConfig config = OneScene(sim::LayoutClass::kMixedNeighbours, 20266);
   const auto r = RunLayoutSweep(perception::Detector(models), models, LayoutWithPresets(), config);
   ASSERT_EQ(r.size(), 1u);
   ASSERT_EQ(r[0].lidar_name, "wlr-716");

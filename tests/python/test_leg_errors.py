@@ -27,10 +27,8 @@ def test_fitted_legs_are_at_the_noise_bound(cli, source_dir, models, tmp_path):
                     "5001", "--models", str(models), "--dump-failures", str(dump), "--dump-all"],
                    check=True, capture_output=True)
     leg_errors = load_script(source_dir)
-    import yaml
-    with open(models) as f:
-        sizes = {m["name"]: m for m in yaml.safe_load(f)["models"]}
-    legs, edges = leg_errors.measure(str(dump), shelfdock.Detector(str(models)), sizes, 0.06)
+    legs, edges = leg_errors.measure(str(dump), shelfdock.Detector(str(models)),
+                                     leg_errors.read_model_sizes(models), 0.06)
     assert len(legs) > 500, f"only {len(legs)} legs matched"
     rows, edge_rows = leg_errors.summarise(legs, edges, min_legs=30)
     checked = [r for r in rows if r["returns"] >= 2]
