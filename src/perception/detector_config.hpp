@@ -199,6 +199,11 @@ struct LegCompletionConfig {
                                   ///< the leg blended with it (its bearing only); 0: off
   double blended_max_err_sum_m = 0.03;  ///< [m] a set with a blended leg: Eq. 2 err_sum bound
   double blended_min_confidence = 0.5;  ///< [-] and the confidence it must reach
+  double surface_min_offset_m = 0.025;  ///< [m] returns at a corner that lie on a surface (a wall
+                                        ///< a few cm behind the leg) are its leg when they stand
+                                        ///< this far in front of the surface beside them ...
+  double surface_offset_sigmas = 3.5;   ///< [-] ... and this many times the noise of that
+                                        ///< offset; 0: off (such returns are no leg)
 };
 
 /// All detector parameters, one struct per stage (config/detector.yaml).

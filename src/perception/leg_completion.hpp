@@ -28,7 +28,10 @@ struct CompletedLegSets {
 /// nothing near the preset because a leg in sight never became a candidate: seen by one return
 /// beside an occluder, or merged with a person's leg. A cut is no leg when its returns already
 /// were a candidate, when the object goes on past it or it lies on a surface with its beam
-/// neighbours, or when it is a single return beside a nearer one (a mixed point may look so).
+/// neighbours, or when it is a single return beside a nearer one (a mixed point may look so);
+/// on a surface, the part of it that stands out from the line fitted to the surface beside it
+/// (`config.surface_min_offset_m`, `surface_offset_sigmas`) is the leg still, placed by its
+/// bearing: a leg a few centimetres in front of a wall.
 /// Only shelves within the map's own error of the preset (`gate.map_error_m`,
 /// `gate.map_error_yaw_rad`) are completed; the sets then go through the same fit, model screening
 /// and evidence as any other (the detector holds a completed 3-leg set to the no-preset err_sum

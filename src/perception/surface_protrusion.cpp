@@ -21,7 +21,8 @@ constexpr int kLineReach = 3;
 // Beam neighbours: consecutive valid points with at most max_missing_beams beams without a
 // return between them (dark patches drop some).
 bool Neighbours(const ScanPoint& a, const ScanPoint& b, const ProtrusionLimits& limits) {
-  return std::abs(b.beam - a.beam) - 1 <= limits.max_missing_beams;
+  return std::abs(b.beam - a.beam) - 1 <= limits.max_missing_beams &&
+         (b.p - a.p).norm() <= limits.surface_max_step_m;
 }
 
 // The points beside [begin, end): up to `count` consecutive beam neighbours on each side,
@@ -60,7 +61,12 @@ std::optional<Beside> PointsBeside(const std::vector<ScanPoint>& points, std::si
                                    std::size_t end, const ProtrusionLimits& limits) {
   const int k = std::max(1, limits.surface_points);
   const Beside b{ReachBack(points, begin, k, limits), begin, end, ReachOn(points, end, k, limits)};
-  if (b.begin - b.before < kMinSidePoints || b.after - b.end < kMinSidePoints) return std::nullopt;
+  const std::size_t shorter = std::min(b.begin - b.before, b.after - b.end);
+  const std::size_t longer = std::max(b.begin - b.before, b.after - b.end);
+  if (longer < kMinSidePoints ||
+      shorter < static_cast<std::size_t>(std::max(1, limits.short_side_points))) {
+    return std::nullopt;
+  }
   return b;
 }
 
@@ -150,6 +156,14 @@ std::optional<double> StandOut(const std::vector<ScanPoint>& points, const Besid
 }
 
 }  // namespace
+
+std::optional<double> ProtrusionSigmas(const std::vector<ScanPoint>& points, std::size_t begin,
+                                       std::size_t end, const ProtrusionLimits& limits) {
+  if (begin >= end || end > points.size()) return std::nullopt;
+  const auto side = PointsBeside(points, begin, end, limits);
+  if (!side) return std::nullopt;
+  return StandOut(points, *side, limits);
+}
 
 std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
                                            const ClusterSpan& span,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,13 @@ struct ProtrusionLimits {
   double surface_rms_m = 0.03;  ///< [m] those points lie within this RMS of their line
   int max_missing_beams = 3;    ///< [-] beams without a return between two points of a surface
                                 ///< (PreprocessConfig::cluster_max_missing_beams)
+  /// [m] points beside a piece farther than this from the one before them end its side (a
+  /// nearer object, an occluder, standing in front of the surface there); infinite: beam
+  /// neighbours only
+  double surface_max_step_m = std::numeric_limits<double>::infinity();
+  /// [-] fewest points the shorter side may have (an occluder may cut one side short; the
+  /// other then needs 3); 3: both sides need 3
+  int short_side_points = 3;
   /// Only pieces near here are looked for (the ROI around a preset): steps farther than
   /// roi_radius_m + max_extent_m from it start none. Empty: anywhere.
   std::optional<Eigen::Vector2d> roi_centre;
@@ -47,5 +55,13 @@ struct ProtrusionLimits {
 /// mean. Of overlapping pieces the one that stands out most (in sigmas) is kept.
 std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
                                            const ClusterSpan& span, const ProtrusionLimits& limits);
+
+/// How far the points [begin, end) of `points` stand in front of the surface beside them, in
+/// sigmas of their mean offset along their beams (the test SurfaceProtrusions puts each piece
+/// to, without the depth step at its ends); nullopt when the points beside them do not make one
+/// surface, when either side stands out with them or when they stand less than min_offset_m in
+/// front of it. `roi_centre` and `max_extent_m` are not looked at.
+std::optional<double> ProtrusionSigmas(const std::vector<ScanPoint>& points, std::size_t begin,
+                                       std::size_t end, const ProtrusionLimits& limits);
 
 }  // namespace shelfdock::perception

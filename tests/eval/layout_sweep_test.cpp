@@ -266,7 +266,8 @@ TEST(LayoutSceneTest, LegsThatMayBeBlendsAndLookTooThinMakeNoPhantom) {
 // against a wall, its back legs a few centimetres in front of it, closer than the break
 // distance, so each lies inside the wall's cluster. Cut out of it (split_inner_pieces) they make
 // the shelf whole: returned first with all four legs, within 2 cm of the truth. Without the rule
-// nothing is returned.
+// the completion from the front legs and the preset cuts them from the wall instead
+// (completion.surface_offset_sigmas): right first again; without both nothing is returned.
 TEST(LayoutSceneTest, LegsJustInFrontOfAWallAreCutOutOfIt) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
@@ -280,6 +281,12 @@ TEST(LayoutSceneTest, LegsJustInFrontOfAWallAreCutOutOfIt) {
   EXPECT_LT(with[0].centre_error_m, 0.02);
   perception::DetectorConfig off;
   off.preprocess.split_inner_pieces = false;
+  const auto completed = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
+  ASSERT_EQ(completed.size(), 1u);
+  EXPECT_EQ(completed[0].outcome, SceneOutcome::kRightFirst);
+  EXPECT_GT(completed[0].stats.completed_sets, 0);
+  EXPECT_LT(completed[0].centre_error_m, 0.02);
+  off.completion.surface_offset_sigmas = 0.0;
   const auto without = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
   ASSERT_EQ(without.size(), 1u);
   EXPECT_EQ(without[0].outcome, SceneOutcome::kMissed);

@@ -288,5 +288,48 @@ TEST(LegCompletionTest, ALegCandidateBehindAnEmptyCornerIsNoBlend) {
   }
 }
 
+// A 1075 x 883 shelf pushed back against a wall, its back legs' back faces 1.5 cm in front of it
+// (their front faces 5.5 cm), seen by a TiM571-like beam (0.87 deg spot, 0.33 deg steps, 10 mm
+// noise, no dropouts) from 3 m: each back leg's one to three returns, blended with the wall,
+// lie within the noise-widened depth step of the wall beside them or on its line, so they seldom
+// become a candidate, and the front legs alone leave the search nothing. With the preset, the
+// completion fits the wall's line beside each back corner and takes the returns standing out
+// from it (LegCompletionConfig::surface_offset_sigmas) as the legs, by their bearing. Over 40
+// seeds every shelf returned is the right model within 2 cm / 20 mrad of the truth (measured:
+// all 40 returned, within 1.1 cm / 16.4 mrad); returned in 36 or more; with the rule off (0) in 10
+// or fewer (measured: 4).
+TEST(LegCompletionTest, BackLegsJustInFrontOfAWallAreCutFromIt) {
+  const geometry::ShelfModel rect = PaperModels()[1];
+  const geometry::Pose2 T_shelf(3.0, 0.1, 0.03);
+  sim::World world;
+  world.AddShelf(1, rect, T_shelf);
+  // The back legs' centres stand at x = 3.0 + 0.5375 (turned 0.03 rad: within 1.4 cm of it),
+  // their back faces 2 cm behind that; the wall 1.5 cm behind those.
+  const double wall_x = T_shelf.x + 0.5 * rect.length_m + 0.5 * rect.leg.length_m + 0.014 + 0.015;
+  world.AddWall({{wall_x, -3.0}, {wall_x + 0.05, 3.0}});
+  sim::LidarConfig tim;
+  tim.enable_dropouts = false;
+  tim.beam_divergence_rad = 0.0153;
+  tim.range_noise_sigma_m = 0.01;
+  const geometry::Pose2 preset(T_shelf.x + 0.1, T_shelf.y - 0.05, T_shelf.yaw + 0.05);
+  DetectorConfig off;
+  off.completion.surface_offset_sigmas = 0.0;
+  int found_on = 0;
+  int found_off = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const auto scan = testing::SimScan(world, {}, seed, tim);
+    const DetectionResult on = Detector(PaperModels()).Detect(scan, preset);
+    for (const Detection& d : on.detections) {
+      EXPECT_EQ(d.model, rect.name) << "seed " << seed;
+      EXPECT_LT(geometry::Distance(d.T_lidar_shelf, T_shelf), 0.02) << "seed " << seed;
+      EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, T_shelf.yaw, rect), 0.02) << "seed " << seed;
+    }
+    found_on += on.detections.empty() ? 0 : 1;
+    found_off += Detector(PaperModels(), off).Detect(scan, preset).detections.empty() ? 0 : 1;
+  }
+  EXPECT_GE(found_on, 36);
+  EXPECT_LE(found_off, 10);
+}
+
 }  // namespace
 }  // namespace shelfdock::perception
