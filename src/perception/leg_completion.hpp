@@ -31,7 +31,8 @@ struct CompletedLegSets {
 /// neighbours, or when it is a single return beside a nearer one (a mixed point may look so);
 /// on a surface, the part of it that stands out from the line fitted to the surface beside it
 /// (`config.surface_min_offset_m`, `surface_offset_sigmas`) is the leg still, placed by its
-/// bearing: a leg a few centimetres in front of a wall.
+/// bearing: a leg a few centimetres in front of a wall. With no return at a corner, returns on
+/// its bearing that stand out so from the wall are the leg's blend with it.
 /// Only shelves within the map's own error of the preset (`gate.map_error_m`,
 /// `gate.map_error_yaw_rad`) are completed; the sets then go through the same fit, model screening
 /// and evidence as any other (the detector holds a completed 3-leg set to the no-preset err_sum
