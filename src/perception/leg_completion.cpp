@@ -147,15 +147,17 @@ Cluster BlendOnSurface(const std::vector<ScanPoint>& points, const Eigen::Vector
   const auto window = BeamWindow(points, std::atan2(corner.y(), corner.x()),
                                  std::atan2(0.5 * leg.Extent() + margin_m, range));
   if (!window) return {};
+  auto near_leg = [&](const ScanPoint& q) {
+    return q.range >= range - 0.5 * leg.Extent() && q.range <= range + max_blend_m;
+  };
   Cluster span;
   for (int beam = window->first - 1; beam <= window->second + 1; ++beam) {
     if (const ScanPoint* q = FindBeam(points, beam)) span.points.push_back(*q);
   }
-  if (span.points.empty()) return {};
+  // The run must lie there: with no return there (most empty corners) there is none to look for.
+  if (std::none_of(span.points.begin(), span.points.end(), near_leg)) return {};
   Cluster c = ProtrudingPart(points, span, limits, step_m);
-  for (const ScanPoint& q : c.points) {
-    if (q.range < range - 0.5 * leg.Extent() || q.range > range + max_blend_m) return {};
-  }
+  if (!std::all_of(c.points.begin(), c.points.end(), near_leg)) return {};
   if (!c.points.empty()) c.assumed_range_m = range;
   return c;
 }

@@ -21,8 +21,9 @@ constexpr int kLineReach = 3;
 // Beam neighbours: consecutive valid points with at most max_missing_beams beams without a
 // return between them (dark patches drop some).
 bool Neighbours(const ScanPoint& a, const ScanPoint& b, const ProtrusionLimits& limits) {
-  return std::abs(b.beam - a.beam) - 1 <= limits.max_missing_beams &&
-         (b.p - a.p).norm() <= limits.surface_max_step_m;
+  if (std::abs(b.beam - a.beam) - 1 > limits.max_missing_beams) return false;
+  return std::isinf(limits.surface_max_step_m) ||
+         (b.p - a.p).squaredNorm() <= limits.surface_max_step_m * limits.surface_max_step_m;
 }
 
 // The points beside [begin, end): up to `count` consecutive beam neighbours on each side,
@@ -161,7 +162,7 @@ std::optional<double> ProtrusionSigmas(const std::vector<ScanPoint>& points, std
                                        std::size_t end, const ProtrusionLimits& limits) {
   if (begin >= end || end > points.size()) return std::nullopt;
   const auto side = PointsBeside(points, begin, end, limits);
-  if (!side) return std::nullopt;
+  if (!side || !MayStandOut(points, *side, limits)) return std::nullopt;
   return StandOut(points, *side, limits);
 }
 
