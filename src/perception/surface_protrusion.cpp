@@ -19,7 +19,8 @@ constexpr std::size_t kMinSidePoints = 3;
 constexpr int kLineReach = 3;
 
 // Beam neighbours: consecutive valid points with at most max_missing_beams beams without a
-// return between them (dark patches drop some).
+// return between them (dark patches drop some) and, when surface_max_step_m is finite, no
+// farther apart than that.
 bool Neighbours(const ScanPoint& a, const ScanPoint& b, const ProtrusionLimits& limits) {
   if (std::abs(b.beam - a.beam) - 1 > limits.max_missing_beams) return false;
   return std::isinf(limits.surface_max_step_m) ||
