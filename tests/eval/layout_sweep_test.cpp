@@ -64,6 +64,29 @@ LayoutSweepConfig OneScene(sim::LayoutClass layout_class, std::uint64_t seed) {
   return config;
 }
 
+// One scene (OneScene) scored on LayoutWithPresets() by a detector with `detector_config`.
+std::vector<LayoutSceneResult> RunOneScene(const std::vector<geometry::ShelfModel>& models,
+                                           const LayoutSweepConfig& config,
+                                           const perception::DetectorConfig& detector_config = {}) {
+  return RunLayoutSweep(perception::Detector(models, detector_config), models, LayoutWithPresets(),
+                        config);
+}
+
+// The one scene's target returned first, whole (four legs), within 2 cm of the truth.
+void ExpectRightFirstWithFourLegs(const std::vector<LayoutSceneResult>& r) {
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].outcome, SceneOutcome::kRightFirst);
+  ASSERT_TRUE(r[0].first.has_value());
+  EXPECT_EQ(r[0].first->legs_used, 4);
+  EXPECT_LT(r[0].centre_error_m, 0.02);
+}
+
+// The one scene's target is findable, and nothing is returned first.
+void ExpectMissed(const std::vector<LayoutSceneResult>& r) {
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].outcome, SceneOutcome::kMissed);
+}
+
 TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
@@ -247,16 +270,15 @@ TEST(LayoutSceneTest, TwoFarLegsEachSeenOnlyBlendedCompleteTheShelf) {
 // with the rule off (blend_max_returns 0) the phantom is returned.
 TEST(LayoutSceneTest, LegsThatMayBeBlendsAndLookTooThinMakeNoPhantom) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const sim::LayoutConfig layout = LayoutWithPresets();
   const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAisle, 149);  // the issue's radius
-  const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
+  const auto with = RunOneScene(models, config);
   ASSERT_EQ(with.size(), 1u);
   ASSERT_EQ(with[0].lidar_name, "tim571");
   EXPECT_EQ(with[0].phantoms, 0);
   EXPECT_GE(with[0].stats.rejected.blended_legs, 1);
   perception::DetectorConfig off;
   off.evidence.blend_max_returns = 0;
-  const auto without = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
+  const auto without = RunOneScene(models, config, off);
   ASSERT_EQ(without.size(), 1u);
   ASSERT_TRUE(without[0].first.has_value());
   EXPECT_GT(without[0].first->nearest_shelf_m, config.phantom_radius_m);
@@ -270,26 +292,20 @@ TEST(LayoutSceneTest, LegsThatMayBeBlendsAndLookTooThinMakeNoPhantom) {
 // (completion.surface_offset_sigmas): right first again; without both nothing is returned.
 TEST(LayoutSceneTest, LegsJustInFrontOfAWallAreCutOutOfIt) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const sim::LayoutConfig layout = LayoutWithPresets();
   const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAgainstWall, 174);
-  const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
+  const auto with = RunOneScene(models, config);
   ASSERT_EQ(with.size(), 1u);
   ASSERT_EQ(with[0].lidar_name, "wlr-716");
-  EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
-  ASSERT_TRUE(with[0].first.has_value());
-  EXPECT_EQ(with[0].first->legs_used, 4);
-  EXPECT_LT(with[0].centre_error_m, 0.02);
+  ExpectRightFirstWithFourLegs(with);
   perception::DetectorConfig off;
   off.preprocess.split_inner_pieces = false;
-  const auto completed = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
+  const auto completed = RunOneScene(models, config, off);
   ASSERT_EQ(completed.size(), 1u);
   EXPECT_EQ(completed[0].outcome, SceneOutcome::kRightFirst);
   EXPECT_GT(completed[0].stats.completed_sets, 0);
   EXPECT_LT(completed[0].centre_error_m, 0.02);
   off.completion.surface_offset_sigmas = 0.0;
-  const auto without = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
-  ASSERT_EQ(without.size(), 1u);
-  EXPECT_EQ(without[0].outcome, SceneOutcome::kMissed);
+  ExpectMissed(RunOneScene(models, config, off));
 }
 
 // eval-layouts' person_beside_leg scenes 243 (TiM571, 10 mm noise, a 1075 x 883) and 339
@@ -300,21 +316,13 @@ TEST(LayoutSceneTest, LegsJustInFrontOfAWallAreCutOutOfIt) {
 // returned first with four legs, within 2 cm of the truth. Counting it (0), neither is returned.
 TEST(LayoutSceneTest, APersonUnderAShelfsEdgeDoesNotHideIt) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const sim::LayoutConfig layout = LayoutWithPresets();
+  perception::DetectorConfig off;
+  off.evidence.foreign_legs_excused = 0;
   for (const std::uint64_t seed : {243u, 339u}) {
     SCOPED_TRACE(seed);
     const LayoutSweepConfig config = OneScene(sim::LayoutClass::kPersonBesideLeg, seed);
-    const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
-    ASSERT_EQ(with.size(), 1u);
-    EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
-    ASSERT_TRUE(with[0].first.has_value());
-    EXPECT_EQ(with[0].first->legs_used, 4);
-    EXPECT_LT(with[0].centre_error_m, 0.02);
-    perception::DetectorConfig off;
-    off.evidence.foreign_legs_excused = 0;
-    const auto without = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
-    ASSERT_EQ(without.size(), 1u);
-    EXPECT_EQ(without[0].outcome, SceneOutcome::kMissed);
+    ExpectRightFirstWithFourLegs(RunOneScene(models, config));
+    ExpectMissed(RunOneScene(models, config, off));
   }
 }
 
@@ -326,7 +334,7 @@ TEST(LayoutSceneTest, APersonUnderAShelfsEdgeDoesNotHideIt) {
 TEST(LayoutSceneTest, AForeignLegInsideCountsWhenALegIsOnlyBlended) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const LayoutSweepConfig config = OneScene(sim::LayoutClass::kMixedNeighbours, 20266);
-  const auto r = RunLayoutSweep(perception::Detector(models), models, LayoutWithPresets(), config);
+  const auto r = RunOneScene(models, config);
   ASSERT_EQ(r.size(), 1u);
   ASSERT_EQ(r[0].lidar_name, "wlr-716");
   EXPECT_EQ(r[0].phantoms, 0);
