@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
+#include <utility>
 
 #include "geometry/angle.hpp"
 #include "perception/preset_gate.hpp"
@@ -14,9 +16,6 @@
 
 namespace shelfdock::perception {
 namespace {
-
-// A floor under the range noise the surface test divides by (as preprocess.cpp's).
-constexpr double kMinSurfaceNoise_m = 0.005;
 
 // The returns within `radius_m` of `corner`, from `near` (indices into `points`, beam order),
 // as one cluster; empty when there are none.
@@ -100,6 +99,18 @@ bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const S
   return !ContinuesSurface(points, begin, end, s.max_step_m, s.min_chord_m, s.tolerance_m);
 }
 
+// The beams on a corner's bearing that may see its leg: its silhouette widened by `margin_m` (the
+// corner's position error), plus a beam either way, first to last; nullopt when the fan's beams
+// cannot be told (fewer than two returns).
+std::optional<std::pair<int, int>> CornerBeams(const std::vector<ScanPoint>& points,
+                                               const Eigen::Vector2d& corner,
+                                               const geometry::LegModel& leg, double margin_m) {
+  const auto window = BeamWindow(points, std::atan2(corner.y(), corner.x()),
+                                 std::atan2(0.5 * leg.Extent() + margin_m, corner.norm()));
+  if (!window) return std::nullopt;
+  return std::pair{window->first - 1, window->second + 1};
+}
+
 // The part of a cut that stands out in front of the surface it lies on: a leg a few
 // centimetres in front of a wall, at a corner two legs and the preset predict. With range noise
 // comparable to that gap, the cut's returns pass the tests of StandsAlone as part of the wall
@@ -144,14 +155,13 @@ Cluster BlendOnSurface(const std::vector<ScanPoint>& points, const Eigen::Vector
                        const ProtrusionLimits& limits, double step_m) {
   const double range = corner.norm();
   if (range <= 0.0) return {};
-  const auto window = BeamWindow(points, std::atan2(corner.y(), corner.x()),
-                                 std::atan2(0.5 * leg.Extent() + margin_m, range));
-  if (!window) return {};
+  const auto beams = CornerBeams(points, corner, leg, margin_m);
+  if (!beams) return {};
   auto near_leg = [&](const ScanPoint& q) {
     return q.range >= range - 0.5 * leg.Extent() && q.range <= range + max_blend_m;
   };
   Cluster span;
-  for (int beam = window->first - 1; beam <= window->second + 1; ++beam) {
+  for (int beam = beams->first; beam <= beams->second; ++beam) {
     if (const ScanPoint* q = FindBeam(points, beam)) span.points.push_back(*q);
   }
   // The run must lie there: with no return there (most empty corners) there is none to look for.
@@ -179,11 +189,9 @@ Cluster BlendedView(const std::vector<ScanPoint>& points, const Eigen::Vector2d&
   Cluster c;
   const double range = corner.norm();
   if (range <= 0.0) return c;
-  const auto window = BeamWindow(points, std::atan2(corner.y(), corner.x()),
-                                 std::atan2(0.5 * leg.Extent() + margin_m, range));
-  if (!window) return c;
-  const int first = window->first - 1;  // a beam either way
-  const int last = window->second + 1;
+  const auto beams = CornerBeams(points, corner, leg, margin_m);
+  if (!beams) return c;
+  const auto [first, last] = *beams;
   double background = std::numeric_limits<double>::infinity();
   for (const int beam : {first - 1, last + 1}) {
     if (const ScanPoint* q = FindBeam(points, beam)) background = std::min(background, q->range);
@@ -224,13 +232,9 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                           MaxLegExtent(models, preprocess, pre.range_noise_m),
                           SurfaceTolerance(preprocess, pre.range_noise_m)};
 
-  ProtrusionLimits protrusion;
+  ProtrusionLimits protrusion = SurfaceTestLimits(preprocess, pre.range_noise_m);
   protrusion.min_offset_m = config.surface_min_offset_m;
   protrusion.offset_sigmas = config.surface_offset_sigmas;
-  protrusion.range_noise_m = std::max(pre.range_noise_m, kMinSurfaceNoise_m);
-  protrusion.surface_points = preprocess.inner_surface_points;
-  protrusion.surface_rms_m = look.tolerance_m;
-  protrusion.max_missing_beams = preprocess.cluster_max_missing_beams;
   // The wall behind a back leg is often seen on one side of it only, the front leg standing in
   // front of the other: the wall's line from one side, the other side's returns up to the
   // occluder on it.

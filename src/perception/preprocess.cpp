@@ -155,6 +155,15 @@ double SurfaceTolerance(const PreprocessConfig& config, double range_noise_m) {
   return std::max(config.surface_tolerance_m, config.surface_noise_sigmas * range_noise_m);
 }
 
+ProtrusionLimits SurfaceTestLimits(const PreprocessConfig& config, double range_noise_m) {
+  ProtrusionLimits limits;
+  limits.range_noise_m = std::max(range_noise_m, kMinProtrusionNoise_m);
+  limits.surface_points = config.inner_surface_points;
+  limits.surface_rms_m = SurfaceTolerance(config, range_noise_m);
+  limits.max_missing_beams = config.cluster_max_missing_beams;
+  return limits;
+}
+
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
                  double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
                  const PreprocessConfig& config, double max_extent_m) {
@@ -225,16 +234,12 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     out.candidates.push_back(std::move(c));
     return true;
   };
-  ProtrusionLimits protrusion;
+  ProtrusionLimits protrusion = SurfaceTestLimits(config, out.range_noise_m);
   protrusion.max_extent_m = max_leg_extent;
   protrusion.min_step_m = std::max(config.split_min_step_m,
                                    config.inner_step_sigmas * std::sqrt(2.0) * out.range_noise_m);
   protrusion.min_offset_m = config.inner_min_offset_m;
   protrusion.offset_sigmas = config.inner_offset_sigmas;
-  protrusion.range_noise_m = std::max(out.range_noise_m, kMinProtrusionNoise_m);
-  protrusion.surface_points = config.inner_surface_points;
-  protrusion.surface_rms_m = surface_tolerance;
-  protrusion.max_missing_beams = config.cluster_max_missing_beams;
   if (T_lidar_preset) {
     protrusion.roi_centre = T_lidar_preset->translation();
     protrusion.roi_radius_m = roi_radius;

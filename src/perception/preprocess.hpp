@@ -97,6 +97,15 @@ double SplitStep(const PreprocessConfig& config, double range_noise_m);
 /// when that is more.
 double SurfaceTolerance(const PreprocessConfig& config, double range_noise_m);
 
+/// The surface test's limits, declared in perception/surface_protrusion.hpp.
+struct ProtrusionLimits;
+
+/// The surface test's limits (SurfaceProtrusions, ProtrusionSigmas) that the scan and these
+/// settings fix, whoever runs the test: the scan's range noise (with a floor: a scan whose noise
+/// could not be estimated reports 0), inner_surface_points, SurfaceTolerance as the surface's RMS
+/// and cluster_max_missing_beams. The rest keeps its defaults, for the caller to set.
+ProtrusionLimits SurfaceTestLimits(const PreprocessConfig& config, double range_noise_m);
+
 /// True when a cluster's extent is at most max_extent_m (MaxLegExtent of the scan) and its point
 /// count fits a leg of some model at its range.
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
