@@ -114,6 +114,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(c.completion.surface_min_offset_m > 0.0, "completion.surface_min_offset_m", "> 0");
   k.Check(c.completion.surface_offset_sigmas >= 0.0, "completion.surface_offset_sigmas",
           ">= 0 (0: off)");
+  k.Check(c.completion.candidate_blend_max_m >= 0.0, "completion.candidate_blend_max_m",
+          ">= 0 (0: off)");
   return k.Result();
 }
 

@@ -164,6 +164,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.completion.surface_min_offset_m = 0.0; }},
     {"surface_sigmas", "completion.surface_offset_sigmas",
      [](auto& c) { c.completion.surface_offset_sigmas = -1.0; }},
+    {"candidate_blend", "completion.candidate_blend_max_m",
+     [](auto& c) { c.completion.candidate_blend_max_m = -0.01; }},
     {"map_error", "preset_gate.map_error_m", [](auto& c) { c.preset_gate.map_error_m = 0.0; }},
     {"map_error_yaw", "preset_gate.map_error_yaw_rad",
      [](auto& c) { c.preset_gate.map_error_yaw_rad = 0.0; }},

@@ -263,6 +263,35 @@ TEST(LegCompletionTest, ALegSeenOnlyBlendedWithItsBackgroundIsPlacedByItsBearing
   EXPECT_TRUE(without.detections.empty());
 }
 
+const geometry::ShelfModel& RoundShelf() {
+  static const geometry::ShelfModel model = PaperModels()[0];  // round legs, 900 x 810
+  return model;
+}
+
+const geometry::Pose2 kPostsShelf(1.55, 0.05, 0.02);
+
+// The TiM571-like scan of round posts at corners `legs` of the round-legged shelf at kPostsShelf,
+// a wall at 2.8 m, and a post `behind_m` behind empty corner `behind` on its bearing: a 40 mm
+// square post (`square`) or one of the legs' size.
+geometry::LaserScan PostBehindCornerScan(const std::vector<int>& legs, int behind, double behind_m,
+                                         bool square) {
+  const auto corners = RoundShelf().LegCentres();
+  sim::World world;
+  for (int k : legs) world.AddRoundPost(kPostsShelf * corners[k], RoundShelf().leg.Radius());
+  const Eigen::Vector2d empty = kPostsShelf * corners[behind];
+  const Eigen::Vector2d post = empty + behind_m * empty.normalized();
+  if (square) {
+    world.AddSquarePost(geometry::Pose2(post.x(), post.y(), 0.3), 0.04);
+  } else {
+    world.AddRoundPost(post, RoundShelf().leg.Radius());
+  }
+  world.AddWall({{2.8, -3.0}, {2.8, 3.0}});
+  return testing::SimScan(world, {}, 1, WideBeam());
+}
+
+const geometry::Pose2 kPostsPreset(kPostsShelf.x + 0.1, kPostsShelf.y - 0.05,
+                                   kPostsShelf.yaw + 0.05);
+
 // The shelf's front legs as posts, its back corners empty, and a 40 mm post 0.25 m behind back
 // corner `behind` on its bearing (no model fits the three posts): the search took that post as a
 // leg at its own range, so it is no blended view of a leg at the corner, and no shelf is returned
@@ -271,20 +300,36 @@ TEST(LegCompletionTest, ALegSeenOnlyBlendedWithItsBackgroundIsPlacedByItsBearing
 // legs seen blended, as a TiM571 sees a shelf's two far legs: a blend of a leg and its
 // background cannot be told from a post behind it by range alone.
 TEST(LegCompletionTest, ALegCandidateBehindAnEmptyCornerIsNoBlend) {
-  const geometry::ShelfModel round = PaperModels()[0];
-  const geometry::Pose2 T_shelf(1.55, 0.05, 0.02);
-  const auto corners = round.LegCentres();
   for (const int behind : {1, 2}) {
-    sim::World world;
-    for (int k : {0, 3}) world.AddRoundPost(T_shelf * corners[k], round.leg.Radius());
-    const Eigen::Vector2d empty = T_shelf * corners[behind];
-    const Eigen::Vector2d post = empty + 0.25 * empty.normalized();
-    world.AddSquarePost(geometry::Pose2(post.x(), post.y(), 0.3), 0.04);
-    world.AddWall({{2.8, -3.0}, {2.8, 3.0}});
-    const auto scan = testing::SimScan(world, {}, 1, WideBeam());
-    const geometry::Pose2 preset(T_shelf.x + 0.1, T_shelf.y - 0.05, T_shelf.yaw + 0.05);
-    const DetectionResult r = Detector(PaperModels()).Detect(scan, preset);
+    const auto scan = PostBehindCornerScan({0, 3}, behind, 0.25, /*square=*/true);
+    const DetectionResult r = Detector(PaperModels()).Detect(scan, kPostsPreset);
     EXPECT_TRUE(r.detections.empty()) << "post behind corner " << behind;
+  }
+}
+
+// Three legs in sight and, 6 cm behind the fourth corner `behind` on its bearing, a post of the
+// legs' size, which the search took as a leg candidate (and, at its own range, as no leg of this
+// shelf). No leg of a neighbour stands that close behind a corner (shelves in rows stand 0.2 m
+// apart or more), so two returns or more all within completion.candidate_blend_max_m behind it
+// are taken as that leg's blend: the shelf is completed by the corner's bearing, within 2 cm /
+// 20 mrad of the truth. With candidate_blend_max_m 0 it is not returned.
+TEST(LegCompletionTest, ACandidateCloseBehindAnEmptyCornerIsItsLegSeenBlended) {
+  for (const int behind : {1, 2}) {
+    const int other_back = behind == 1 ? 2 : 1;
+    const auto scan = PostBehindCornerScan({0, other_back, 3}, behind, 0.06, /*square=*/false);
+    const DetectionResult r = Detector(PaperModels()).Detect(scan, kPostsPreset);
+    ASSERT_EQ(r.detections.size(), 1u) << "post behind corner " << behind;
+    EXPECT_GT(r.stats.completed_sets, 0);
+    const Detection& d = r.detections[0];
+    EXPECT_EQ(d.model, RoundShelf().name);
+    EXPECT_LT(geometry::Distance(d.T_lidar_shelf, kPostsShelf), 0.02) << "behind " << behind;
+    EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, kPostsShelf.yaw, RoundShelf()), 0.02);
+    DetectorConfig off;
+    off.completion.candidate_blend_max_m = 0.0;
+    const DetectionResult without = Detector(PaperModels(), off).Detect(scan, kPostsPreset);
+    for (const Detection& w : without.detections) {
+      EXPECT_GT(geometry::Distance(w.T_lidar_shelf, kPostsShelf), 0.02) << w.model;
+    }
   }
 }
 
