@@ -121,6 +121,7 @@ void ReadCompletion(YamlFields f, perception::LegCompletionConfig& c) {
   f.Read("blended_min_confidence", c.blended_min_confidence);
   f.Read("surface_min_offset_m", c.surface_min_offset_m);
   f.Read("surface_offset_sigmas", c.surface_offset_sigmas);
+  f.Read("surface_open_end", c.surface_open_end);
   f.Read("candidate_blend_max_m", c.candidate_blend_max_m);
   f.RejectUnknown();
 }

@@ -204,6 +204,9 @@ struct LegCompletionConfig {
                                         ///< this far in front of the surface beside them ...
   double surface_offset_sigmas = 3.5;   ///< [-] ... and this many times the noise of that
                                         ///< offset; 0: off (such returns are no leg)
+  bool surface_open_end = true;         ///< a leg at the end of what it touches (a person's leg
+                                        ///< beside it), the background past it, is measured
+                                        ///< against that surface alone
   double candidate_blend_max_m = 0.1;   ///< [m] a blend the search took as a leg completes a
                                         ///< corner alone when its returns lie at most this far
                                         ///< behind the corner (two returns or more; only

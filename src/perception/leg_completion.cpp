@@ -250,6 +250,13 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
   // occluder on it.
   protrusion.surface_max_step_m = look.max_step_m;
   protrusion.short_side_points = 1;
+  // A leg with something touching it on one side only (a person's leg beside it), the
+  // background past it on the other, is measured against that side alone
+  // (completion.surface_open_end; eval-layouts seeds 1 and seed0 5001 / 20001 / 40001, WLR-716
+  // 5001: +1 / +4 / +2 / 0 / +1 right first, the sensor variants of config/lidar_variants/ at
+  // 5001 0..+7; phantoms and clutter detections unchanged. Without the test that the piece is one
+  // object, a box's return and the wall past it made a clutter detection).
+  protrusion.open_end = config.surface_open_end;
 
   // Only returns near the preset can stand at a completed corner.
   double reach = 0.0;

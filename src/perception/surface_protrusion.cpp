@@ -57,6 +57,28 @@ struct Beside {
   std::size_t after = 0;
 };
 
+// The side of `b` without points ends the object at a silhouette edge: the return past the piece
+// there (the next beam's, up to max_missing_beams on) lies farther than the piece's end by
+// more than min_step_m, or there is none (the sky past a shelf's corner). A nearer return there
+// is an occluder: what it hides may be the surface going on in front of the piece.
+bool OpenEnd(const std::vector<ScanPoint>& points, const Beside& b,
+             const ProtrusionLimits& limits) {
+  // One object: the piece's ranges within a leg's extent of each other (not an occluder's
+  // returns and the surface's behind it).
+  const auto [nearest, farthest] =
+      std::minmax_element(points.begin() + static_cast<std::ptrdiff_t>(b.begin),
+                          points.begin() + static_cast<std::ptrdiff_t>(b.end),
+                          [](const ScanPoint& x, const ScanPoint& y) { return x.range < y.range; });
+  if (farthest->range - nearest->range > limits.max_extent_m) return false;
+  const bool open_after = b.after == b.end;
+  const std::size_t last = open_after ? b.end - 1 : b.begin;  // the piece's point at that end
+  const std::size_t past = open_after ? b.end : b.begin;      // index of the return past it
+  if (open_after ? past >= points.size() : past == 0) return true;
+  const ScanPoint& q = open_after ? points[past] : points[past - 1];
+  if (std::abs(q.beam - points[last].beam) - 1 > limits.max_missing_beams) return true;
+  return q.range - farthest->range > limits.min_step_m;
+}
+
 // The piece with the points right beside it; nullopt when either side has fewer than
 // kMinSidePoints.
 std::optional<Beside> PointsBeside(const std::vector<ScanPoint>& points, std::size_t begin,
@@ -65,8 +87,9 @@ std::optional<Beside> PointsBeside(const std::vector<ScanPoint>& points, std::si
   const Beside b{ReachBack(points, begin, k, limits), begin, end, ReachOn(points, end, k, limits)};
   const std::size_t shorter = std::min(b.begin - b.before, b.after - b.end);
   const std::size_t longer = std::max(b.begin - b.before, b.after - b.end);
-  if (longer < kMinSidePoints ||
-      shorter < static_cast<std::size_t>(std::max(1, limits.short_side_points))) {
+  if (longer < kMinSidePoints) return std::nullopt;
+  if (shorter == 0 && limits.open_end && OpenEnd(points, b, limits)) return b;
+  if (shorter < static_cast<std::size_t>(std::max(1, limits.short_side_points))) {
     return std::nullopt;
   }
   return b;
@@ -88,9 +111,15 @@ bool MayStandOut(const std::vector<ScanPoint>& points, const Beside& side,
     beam /= static_cast<double>(to - from);
   };
   double r_before, b_before, r_after, b_after, r_piece, b_piece;
+  mean_of(side.begin, side.end, r_piece, b_piece);
+  if (side.before == side.begin || side.end == side.after) {  // an open end: one side's mean
+    const bool open_after = side.end == side.after;
+    mean_of(open_after ? side.before : side.end, open_after ? side.begin : side.after, r_before,
+            b_before);
+    return r_before - r_piece >= 0.5 * limits.min_offset_m;
+  }
   mean_of(side.before, side.begin, r_before, b_before);
   mean_of(side.end, side.after, r_after, b_after);
-  mean_of(side.begin, side.end, r_piece, b_piece);
   if (b_after == b_before) return false;
   const double t = (b_piece - b_before) / (b_after - b_before);
   return r_before + t * (r_after - r_before) - r_piece >= 0.5 * limits.min_offset_m;
@@ -142,8 +171,10 @@ std::optional<double> StandOut(const std::vector<ScanPoint>& points, const Besid
     return sum / static_cast<double>(to - from);
   };
   const auto offset = mean_offset(begin, end);
-  const auto offset_before = mean_offset(before, begin);
-  const auto offset_after = mean_offset(end, after);
+  // An open end's side has no points: nothing there stands out with the piece.
+  const auto offset_before =
+      before == begin ? std::optional<double>(0.0) : mean_offset(before, begin);
+  const auto offset_after = end == after ? std::optional<double>(0.0) : mean_offset(end, after);
   if (!offset || !offset_before || !offset_after || *offset < limits.min_offset_m) {
     return std::nullopt;
   }

@@ -35,6 +35,11 @@ struct ProtrusionLimits {
   /// [-] fewest points the shorter side may have (an occluder may cut one side short; the
   /// other then needs 3); 3: both sides need 3
   int short_side_points = 3;
+  /// A piece at the end of its object, the return past it a step behind (the background seen
+  /// past a silhouette edge) or none, may be measured against the surface on its other side
+  /// alone (a leg with a person's leg, a box touching it on one side); false: both sides need
+  /// short_side_points
+  bool open_end = false;
   /// Only pieces near here are looked for (the ROI around a preset): steps farther than
   /// roi_radius_m + max_extent_m from it start none. Empty: anywhere.
   std::optional<Eigen::Vector2d> roi_centre;
