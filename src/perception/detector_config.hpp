@@ -207,7 +207,7 @@ struct LegCompletionConfig {
   bool surface_open_end = true;         ///< a leg at the end of what it touches (a person's leg
                                         ///< beside it), the background past it, is measured
                                         ///< against that surface alone
-  double candidate_blend_max_m = 0.1;   ///< [m] a blend the search took as a leg completes a
+  double candidate_blend_max_m = 0.06;  ///< [m] a blend the search took as a leg completes a
                                         ///< corner alone when its returns lie at most this far
                                         ///< behind the corner (two returns or more; only
                                         ///< blends within max_blend_m count); 0: off

@@ -362,11 +362,15 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                 // without, 69 and none). Both missing corners blended on their bearings is
                 // another matter: a neighbour's legs behind both corners of a model would have to
                 // line up with the pair (below). So is a blend close behind the corner
-                // (completion.candidate_blend_max_m; eval-layouts seeds 1 and seed0 5001 / 20001 /
-                // 40001, WLR-716 5001: +1 / +4 / +2 / +2 / +1 right first, the seven sensor
-                // variants of config/lidar_variants/ at 5001 +2..+7; phantoms and clutter
-                // detections unchanged. Single returns too: +6 more, but two phantoms under
-                // blend_1p5m, round legs at 20 mm noise whose every leg was one blended return).
+                // (completion.candidate_blend_max_m, 0.06 m; with completion.surface_open_end on,
+                // eval-layouts seeds 1 and seed0 5001 / 20001 / 40001, WLR-716 5001: 0 / 0 / +1 /
+                // +1 / 0 right first, the sensor variants of config/lidar_variants/ 0 to +4;
+                // phantoms and clutter detections unchanged. At 0.1 m +1 / +4 / +2 / +2 / +1 and
+                // +2 to +24, but three phantoms on the variants, round-legged shelves taken for
+                // rectangular ones 6-12 cm off (blend_1p5m seeds 1 round_noisy 148, dropouts aisle
+                // 253, blend_any seed0 5001 person_beside_leg 5526); at 0.08 m the second stays.
+                // Single returns too: two phantoms under blend_1p5m, round legs at 20 mm noise
+                // whose every leg was one blended return).
                 if (!c.points.empty() && already_candidate(c) &&
                     !CloseBehindCorner(c, corner.norm(), config.candidate_blend_max_m)) {
                   ++blends_of_candidates;
