@@ -89,6 +89,9 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("interior_scale_points", c.interior_scale_points);
   f.Read("foreign_leg_points", c.foreign_leg_points);
   f.Read("foreign_legs_excused", c.foreign_legs_excused);
+  f.Read("edge_band_m", c.edge_band_m);
+  f.Read("edge_corner_clearance_m", c.edge_corner_clearance_m);
+  f.Read("edge_partner_m", c.edge_partner_m);
   f.Read("object_point_weight", c.object_point_weight);
   f.Read("object_point_spacing_m", c.object_point_spacing_m);
   f.Read("leg_size_margin_m", c.leg_size_margin_m);

@@ -414,6 +414,11 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       role = c.edges.before_cut || c.edges.after_cut ? SpanRole::kPartlyHiddenLeg : SpanRole::kLeg;
     }
   }
+  for (const Cluster& c : pre.candidates) {
+    if (c.span < 0 || c.edges.before_cut || c.edges.after_cut) continue;
+    SpanRole& role = span_roles[static_cast<std::size_t>(c.span)];
+    if (role == SpanRole::kOther) role = SpanRole::kLoneLeg;
+  }
   ScoreInputs inputs{pre,
                      span_roles,
                      angle_increment_rad,

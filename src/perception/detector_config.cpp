@@ -81,6 +81,9 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.interior_scale_points > 0.0, "evidence.interior_scale_points", "> 0");
   k.Check(e.foreign_leg_points >= 0.0, "evidence.foreign_leg_points", ">= 0");
   k.Check(e.foreign_legs_excused >= 0, "evidence.foreign_legs_excused", ">= 0 (0: off)");
+  k.Check(e.edge_band_m >= 0.0, "evidence.edge_band_m", ">= 0 (0: off)");
+  k.Check(e.edge_corner_clearance_m >= 0.0, "evidence.edge_corner_clearance_m", ">= 0");
+  k.Check(e.edge_partner_m >= 0.0, "evidence.edge_partner_m", ">= 0");
   k.Check(e.object_point_weight >= 0.0, "evidence.object_point_weight", ">= 0");
   k.Check(e.object_point_spacing_m >= 0.0, "evidence.object_point_spacing_m", ">= 0");
   k.Check(e.leg_size_margin_m >= 0.0, "evidence.leg_size_margin_m", ">= 0");

@@ -129,6 +129,11 @@ struct EvidenceConfig {
   double fit_chi2_four_legs = 12.0;       ///< [-] the same for four legs
   double interior_scale_points = 4.0;     ///< [-] points inside the footprint that halve it
   double foreign_leg_points = 6.0;        ///< [-] a leg-sized cluster inside counts as this many
+  double edge_band_m = 0.05;              ///< [m] a foreign leg this near an edge line of the
+                                          ///< footprint (inside or outside it) stands on the
+                                          ///< edge and counts as inside; 0: off
+  double edge_corner_clearance_m = 0.2;   ///< [m] ... when at least this far from every corner
+  double edge_partner_m = 0.4;            ///< [m] ... and no other object stands this near it
   int foreign_legs_excused = 1;           ///< [-] legs of other sets inside that do not count
                                           ///< when four legs measured by their own returns and
                                           ///< the map vouch for the shelf (a person under its

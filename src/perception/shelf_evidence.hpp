@@ -46,7 +46,8 @@ struct ShelfEvidence {
   /// The other interior points (objects), each weighted by its beam spacing over
   /// EvidenceConfig::object_point_spacing_m, at most 1.
   double interior_object_points = 0.0;
-  int foreign_legs_inside = 0;   ///< legs of other leg sets (not its own) standing inside
+  int foreign_legs_inside = 0;   ///< legs of other leg sets (not its own) standing inside, and
+                                 ///< lone legs on its edge lines (OnEdgeLine in the .cpp)
   double leg_width_error_m = 0;  ///< worst |seen width - model leg's silhouette| over its legs
   double leg_width_bias_m = 0;   ///< mean (seen width - model leg's silhouette) over its legs
                                  ///< with both outline edges seen (or seen too wide)
@@ -62,6 +63,8 @@ enum class SpanRole : char {
   kLeg,              ///< a leg of some leg set (a shelf-shaped group), its outline whole
   kPartlyHiddenLeg,  ///< the same, but something nearer hides one side of it (SilhouetteEdges'
                      ///< cut): it may be the visible sliver of a larger object
+  kLoneLeg,          ///< a leg candidate in no leg set, its outline whole: inside a footprint
+                     ///< an object like any other, on its edge line a leg (OnEdgeLine)
 };
 
 /// Gathers the evidence for a shelf at `T_lidar_shelf` of `model` whose model corner k is the

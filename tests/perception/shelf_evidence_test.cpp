@@ -436,6 +436,44 @@ TEST(ShelfEvidenceTest, LegsOfAnotherSectionLowerTheConfidence) {
   }
 }
 
+// A 1075x883 shelf 1.8 m ahead, all four legs in sight, and a 40 mm post standing on the line
+// between its two front legs (0.44 m from each, 2 cm in front of the line), where the shrunk
+// footprint of the free-space check does not reach: it stands on the edge, so it counts as a
+// leg inside (evidence.edge_band_m) and its returns lower the confidence (the leg itself is
+// excused here: four legs measured and the preset vouch, evidence.foreign_legs_excused). Two such
+// posts 0.25 m apart are
+// taken for a person's legs (evidence.edge_partner_m) and do not count.
+TEST(ShelfEvidenceTest, ALoneLegOnAnEdgeLineCountsAsInside) {
+  const auto models = PaperModels();
+  const auto& model = models[1];
+  const geometry::Pose2 T_shelf(1.8 + 0.5 * model.length_m, 0.0, 0.0);
+  auto best = [&](std::vector<double> post_y) {
+    sim::World world;
+    testing::AddRoom(world);
+    world.AddShelf(1, model, T_shelf);
+    for (double y : post_y) world.AddSquarePost(geometry::Pose2(1.78, y, 0.0), 0.04);
+    const DetectionResult r = Detector(models).Detect(SimScan(world, {}, 11), T_shelf, true);
+    std::optional<HypothesisRecord> found;
+    for (const auto& h : r.hypotheses) {
+      if (h.model == model.name && h.legs.size() == 4 &&
+          (h.T_lidar_shelf.translation() - T_shelf.translation()).norm() < kCentreTol &&
+          (!found || h.confidence > found->confidence)) {
+        found = h;
+      }
+    }
+    return found;
+  };
+  const auto clear = best({});
+  const auto lone = best({0.0});
+  const auto pair = best({-0.1, 0.15});
+  ASSERT_TRUE(clear && lone && pair);
+  EXPECT_EQ(clear->foreign_legs_inside, 0);
+  EXPECT_EQ(lone->foreign_legs_inside, 1);
+  EXPECT_LT(lone->confidence, 0.75 * clear->confidence);
+  EXPECT_GT(pair->confidence, 0.9 * clear->confidence);
+  EXPECT_EQ(pair->foreign_legs_inside, 0);
+}
+
 // A person (two 10 cm legs, 0.2 m apart) standing inside the footprint near a front leg of a
 // shelf seen with all four legs, 1.8 m ahead, at spots 0.1-0.25 m in from the leg. A person's
 // leg is not a shelf leg: it must never count as a foreign leg inside (the signature of a phantom
