@@ -242,7 +242,9 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                           MaxLegExtent(models, preprocess, pre.range_noise_m),
                           SurfaceTolerance(preprocess, pre.range_noise_m)};
 
-  ProtrusionLimits protrusion = SurfaceTestLimits(preprocess, pre.range_noise_m);
+  // The widest piece and the step past an open end (completion.surface_open_end) as the
+  // preprocessing's own surface test has them.
+  ProtrusionLimits protrusion = SurfaceTestLimits(preprocess, pre.range_noise_m, look.min_chord_m);
   protrusion.min_offset_m = config.surface_min_offset_m;
   protrusion.offset_sigmas = config.surface_offset_sigmas;
   // The wall behind a back leg is often seen on one side of it only, the front leg standing in

@@ -155,12 +155,16 @@ double SurfaceTolerance(const PreprocessConfig& config, double range_noise_m) {
   return std::max(config.surface_tolerance_m, config.surface_noise_sigmas * range_noise_m);
 }
 
-ProtrusionLimits SurfaceTestLimits(const PreprocessConfig& config, double range_noise_m) {
+ProtrusionLimits SurfaceTestLimits(const PreprocessConfig& config, double range_noise_m,
+                                   double max_leg_extent_m) {
   ProtrusionLimits limits;
   limits.range_noise_m = std::max(range_noise_m, kMinProtrusionNoise_m);
   limits.surface_points = config.inner_surface_points;
   limits.surface_rms_m = SurfaceTolerance(config, range_noise_m);
   limits.max_missing_beams = config.cluster_max_missing_beams;
+  limits.max_extent_m = max_leg_extent_m;
+  limits.min_step_m =
+      std::max(config.split_min_step_m, config.inner_step_sigmas * std::sqrt(2.0) * range_noise_m);
   return limits;
 }
 
@@ -234,10 +238,7 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     out.candidates.push_back(std::move(c));
     return true;
   };
-  ProtrusionLimits protrusion = SurfaceTestLimits(config, out.range_noise_m);
-  protrusion.max_extent_m = max_leg_extent;
-  protrusion.min_step_m = std::max(config.split_min_step_m,
-                                   config.inner_step_sigmas * std::sqrt(2.0) * out.range_noise_m);
+  ProtrusionLimits protrusion = SurfaceTestLimits(config, out.range_noise_m, max_leg_extent);
   protrusion.min_offset_m = config.inner_min_offset_m;
   protrusion.offset_sigmas = config.inner_offset_sigmas;
   if (T_lidar_preset) {

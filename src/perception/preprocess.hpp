@@ -102,9 +102,12 @@ struct ProtrusionLimits;
 
 /// The surface test's limits (SurfaceProtrusions, ProtrusionSigmas) that the scan and these
 /// settings fix, whoever runs the test: the scan's range noise (with a floor: a scan whose noise
-/// could not be estimated reports 0), inner_surface_points, SurfaceTolerance as the surface's RMS
-/// and cluster_max_missing_beams. The rest keeps its defaults, for the caller to set.
-ProtrusionLimits SurfaceTestLimits(const PreprocessConfig& config, double range_noise_m);
+/// could not be estimated reports 0), inner_surface_points, SurfaceTolerance as the surface's RMS,
+/// cluster_max_missing_beams, `max_leg_extent_m` (MaxLegExtent) as the widest piece and the
+/// depth step a piece's end needs (split_min_step_m, or inner_step_sigmas times the noise of a
+/// difference of two ranges when more). The rest keeps its defaults, for the caller to set.
+ProtrusionLimits SurfaceTestLimits(const PreprocessConfig& config, double range_noise_m,
+                                   double max_leg_extent_m);
 
 /// True when a cluster's extent is at most max_extent_m (MaxLegExtent of the scan) and its point
 /// count fits a leg of some model at its range.
