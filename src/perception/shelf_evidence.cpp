@@ -205,6 +205,11 @@ bool OnEdgeLine(const Eigen::Vector2d& c, const geometry::ShelfModel& model,
   return true;
 }
 
+// True when span index `i` is in `spans`.
+bool Listed(const std::vector<int>& spans, int i) {
+  return std::find(spans.begin(), spans.end(), i) != spans.end();
+}
+
 // True when some other object stands within edge_partner_m of span `s` (not one of the
 // hypothesis's own legs): a leg with a partner that close is most often one of a person's two
 // legs, a shelf's leg has none.
@@ -213,9 +218,10 @@ bool HasPartner(const PreprocessOutput& pre, std::size_t s, const std::vector<in
   const Eigen::Vector2d& c = pre.spans[s].centroid;
   const double r2 = config.edge_partner_m * config.edge_partner_m;
   for (std::size_t o = 0; o < pre.spans.size(); ++o) {
-    const bool own =
-        std::find(own_spans.begin(), own_spans.end(), static_cast<int>(o)) != own_spans.end();
-    if (o != s && !own && (pre.spans[o].centroid - c).squaredNorm() < r2) return true;
+    if (o != s && !Listed(own_spans, static_cast<int>(o)) &&
+        (pre.spans[o].centroid - c).squaredNorm() < r2) {
+      return true;
+    }
   }
   return false;
 }
@@ -248,9 +254,6 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   double beam_sum = 0.0;
   int width_count = 0;
   int bias_count = 0;
-  auto listed = [](const std::vector<int>& v, int i) {
-    return std::find(v.begin(), v.end(), i) != v.end();
-  };
   // Its own legs first: an occluded leg may be hidden by one of them (seen along a side).
   for (int cand : corner_candidate) {
     if (cand >= 0) own_spans.push_back(pre.candidates[cand].span);
@@ -296,7 +299,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     }
     if (look.view == LegView::kOccluded) {
       if (std::any_of(look.occluder_spans.begin(), look.occluder_spans.end(),
-                      [&](int span) { return !listed(own_spans, span); })) {
+                      [&](int span) { return !Listed(own_spans, span); })) {
         ++ev.legs_hidden_by_other;
       }
       // The object hiding a leg may stand under the shelf (a box in front of a back leg): it
@@ -349,7 +352,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     const ClusterSpan& span = pre.spans[s];
     if ((span.centroid - T_lidar_shelf.translation()).norm() > reach + span.extent_m) continue;
     const int si = static_cast<int>(s);
-    if (listed(own_spans, si) || listed(excused_spans, si)) continue;
+    if (Listed(own_spans, si) || Listed(excused_spans, si)) continue;
     int inside = 0;
     // An object's points count the surface they cover, not the returns: a person's leg 0.6 m
     // from the sensor returns some 30 points, at 3 m five or six. Each counts as much as its beam
@@ -372,17 +375,18 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     // On an edge line only a whole leg of two returns or more counts: the sliver of an occluder
     // cut by something nearer, or one stray return, is no leg.
     const bool on_edge = (role == SpanRole::kLeg || role == SpanRole::kLoneLeg) &&
-                         span.end - span.begin >= 2 && OnEdgeLine(c, model, corners, config) &&
+                         span.size() >= 2 && OnEdgeLine(c, model, corners, config) &&
                          !HasPartner(pre, s, own_spans, config);
     if (inside == 0 && !on_edge) continue;
-    const bool beside_own_leg = (s > 0 && listed(own_spans, si - 1)) || listed(own_spans, si + 1);
-    if (!IsForeignLeg(pre, span, on_edge || role != SpanRole::kLoneLeg ? role : SpanRole::kOther,
-                      beside_own_leg, leg_extent, alpha, vouched, config)) {
+    // A lone leg is a leg only on an edge line; inside, an object like any other.
+    const SpanRole seen_as = role == SpanRole::kLoneLeg && !on_edge ? SpanRole::kOther : role;
+    const bool beside_own_leg = (s > 0 && Listed(own_spans, si - 1)) || Listed(own_spans, si + 1);
+    if (!IsForeignLeg(pre, span, seen_as, beside_own_leg, leg_extent, alpha, vouched, config)) {
       ev.interior_object_points += surface;
       continue;
     }
     // A leg on an edge line counts as one inside, its returns included.
-    ev.interior_leg_points += inside > 0 ? inside : static_cast<int>(span.end - span.begin);
+    ev.interior_leg_points += inside > 0 ? inside : static_cast<int>(span.size());
     if (on_edge || (std::abs(c.x()) < hx && std::abs(c.y()) < hy)) ++ev.foreign_legs_inside;
   }
   return ev;
