@@ -411,11 +411,11 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       if (c.span < 0) continue;
       SpanRole& role = span_roles[static_cast<std::size_t>(c.span)];
       if (role == SpanRole::kLeg) continue;
-      role = c.edges.before_cut || c.edges.after_cut ? SpanRole::kPartlyHiddenLeg : SpanRole::kLeg;
+      role = c.edges.cut() ? SpanRole::kPartlyHiddenLeg : SpanRole::kLeg;
     }
   }
   for (const Cluster& c : pre.candidates) {
-    if (c.span < 0 || c.edges.before_cut || c.edges.after_cut) continue;
+    if (c.span < 0 || c.edges.cut()) continue;
     SpanRole& role = span_roles[static_cast<std::size_t>(c.span)];
     if (role == SpanRole::kOther) role = SpanRole::kLoneLeg;
   }

@@ -79,10 +79,10 @@ bool MayBeMixedPoint(const std::vector<ScanPoint>& points, const Cluster& c, dou
 
 // What tells a leg from part of something else, from the scan's returns around a cut.
 struct Surroundings {
-  double step_m = 0.0;       // depth step that sets an object off (SplitStep)
-  double max_step_m = 0.0;   // farthest beam neighbour on one surface (surface_max_step_m)
-  double min_chord_m = 0.0;  // a surface is wider than a leg (MaxLegExtent)
-  double tolerance_m = 0.0;  // a return this close to a surface's line lies on it
+  double step_m = 0.0;            // depth step that sets an object off (SplitStep)
+  double max_step_m = 0.0;        // farthest beam neighbour on one surface (surface_max_step_m)
+  double max_leg_extent_m = 0.0;  // the widest a leg may be (MaxLegExtent); a surface is wider
+  double tolerance_m = 0.0;       // a return this close to a surface's line lies on it
 };
 
 // True when the cut's returns can be a leg of their own: the object does not go on past them,
@@ -96,7 +96,7 @@ bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const S
   }
   const std::size_t begin = IndexOfBeam(points, c.points.front().beam);
   const std::size_t end = IndexOfBeam(points, c.points.back().beam + 1);
-  return !ContinuesSurface(points, begin, end, s.max_step_m, s.min_chord_m, s.tolerance_m);
+  return !ContinuesSurface(points, begin, end, s.max_step_m, s.max_leg_extent_m, s.tolerance_m);
 }
 
 // The beams on a corner's bearing that may see its leg: its silhouette widened by `margin_m` (the
@@ -244,7 +244,8 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
 
   // The widest piece and the step past an open end (completion.surface_open_end) as the
   // preprocessing's own surface test has them.
-  ProtrusionLimits protrusion = SurfaceTestLimits(preprocess, pre.range_noise_m, look.min_chord_m);
+  ProtrusionLimits protrusion =
+      SurfaceTestLimits(preprocess, pre.range_noise_m, look.max_leg_extent_m);
   protrusion.min_offset_m = config.surface_min_offset_m;
   protrusion.offset_sigmas = config.surface_offset_sigmas;
   // The wall behind a back leg is often seen on one side of it only, the front leg standing in

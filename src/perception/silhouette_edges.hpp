@@ -22,6 +22,8 @@ struct SilhouetteEdges {
   /// angle drops a beam or so.
   bool before_cut = false;
   bool after_cut = false;
+  /// Whether the outline is cut on either side (the object may be larger than it looks).
+  bool cut() const { return before_cut || after_cut; }
   /// [m] How far behind the outer return the next beam out returned (negative: nearer); empty
   /// where that beam returned nothing or the scan has none.
   std::optional<double> before_step_m;
