@@ -216,6 +216,11 @@ struct LegCompletionConfig {
                                         ///< corner alone when its returns lie at most this far
                                         ///< behind the corner (two returns or more; only
                                         ///< blends within max_blend_m count); 0: off
+  double lone_return_tolerance_m = 0.025;  ///< [m] a lone return beside a nearer step (what a
+                                           ///< mixed point looks like) completes a corner when it
+                                           ///< lies this near the leg's predicted range ...
+  double lone_return_sigmas = 2.0;         ///< [-] ... or this many times the range noise, if more;
+                                           ///< both 0: such a return never completes a corner
 };
 
 /// All detector parameters, one struct per stage (config/detector.yaml).

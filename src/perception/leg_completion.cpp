@@ -88,10 +88,11 @@ struct Surroundings {
 // True when the cut's returns can be a leg of their own: the object does not go on past them,
 // they do not lie on the line through their beam neighbours (a surface seen at a grazing angle,
 // or mixed points ramping from an object to its background: ContinuesSurface) and a single one
-// is no mixed point.
-bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const Surroundings& s) {
+// is no mixed point, unless it lies where the leg's face is predicted (`at_leg_range`).
+bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const Surroundings& s,
+                 bool at_leg_range) {
   if (ContinuesPastCut(points, c, s.step_m, s.max_step_m, s.tolerance_m) ||
-      MayBeMixedPoint(points, c, s.step_m)) {
+      (!at_leg_range && MayBeMixedPoint(points, c, s.step_m))) {
     return false;
   }
   const std::size_t begin = IndexOfBeam(points, c.points.front().beam);
@@ -218,6 +219,15 @@ Cluster BlendedView(const std::vector<ScanPoint>& points, const Eigen::Vector2d&
 // behind the corner on its bearing: they lie at most `max_behind_m` (> 0) behind the corner's
 // range, where no leg of another shelf stands (shelves in rows stand 0.2 m apart or more), and
 // they are two or more (one return beside a nearer one may be a mixed point).
+// True when `c` is a single return within `tolerance_m` of the range at which its beam meets the
+// face of a leg standing at `corner` (the corner's range less half the leg's narrower side).
+bool LoneReturnAtLegRange(const Cluster& c, const Eigen::Vector2d& corner,
+                          const geometry::LegModel& leg, double tolerance_m) {
+  if (c.points.size() != 1) return false;
+  const double face = corner.norm() - 0.5 * std::min(leg.length_m, leg.width_m);
+  return std::abs(c.points.front().range - face) <= tolerance_m;
+}
+
 bool CloseBehindCorner(const Cluster& c, double corner_range, double max_behind_m) {
   if (max_behind_m <= 0.0 || c.points.size() < 2) return false;
   return std::all_of(c.points.begin(), c.points.end(),
@@ -260,6 +270,17 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
   // 5001 0..+7; phantoms and clutter detections unchanged. Without the test that the piece is one
   // object, a box's return and the wall past it made a clutter detection).
   protrusion.open_end = config.surface_open_end;
+
+  // A leg that one beam sees beside an occluder's edge returns what a mixed point of that edge
+  // would: one return, a depth step behind its neighbour. Where two legs and the preset predict
+  // a leg, such a return at the leg's range is taken for it; a mixed point lies anywhere between
+  // the occluder and the background, seldom within the noise of that range. eval-layouts over
+  // 100000 scenes (--scenes-per-class 1000, seed0 60001 ... 240001): +78 right first, the same
+  // phantoms; counting a leg in sight from one beam on (not two), seed0 5001 / 20001: +77 / +53
+  // right first, occluded_leg 91.2 -> 95.0 % and 89.4 -> 93.0 %. Clutter: 3 more detections in
+  // 25000 scenes (a post's sliver beside a nearer object where two posts put a corner).
+  const double lone_return_tolerance =
+      std::max(config.lone_return_tolerance_m, config.lone_return_sigmas * pre.range_noise_m);
 
   // Only returns near the preset can stand at a completed corner.
   double reach = 0.0;
@@ -389,7 +410,10 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                 }
               } else if (!c.points.empty() && already_candidate(c)) {
                 c = Cluster{};
-              } else if (!c.points.empty() && !StandsAlone(scan_points, c, look)) {
+              } else if (!c.points.empty() &&
+                         !StandsAlone(
+                             scan_points, c, look,
+                             LoneReturnAtLegRange(c, corner, model.leg, lone_return_tolerance))) {
                 c = config.surface_offset_sigmas > 0.0
                         ? ProtrudingPart(scan_points, c, protrusion, look.step_m)
                         : Cluster{};

@@ -180,15 +180,38 @@ TEST(LegCompletionTest, WithoutAPresetNothingIsCompleted) {
   EXPECT_EQ(r.stats.completed_sets, 0);
 }
 
-TEST(LegCompletionTest, AReturnBetweenANearerBoxAndTheBackgroundMayBeMixedAndDoesNotComplete) {
-  // The lone return sits right beside the box: as a mixed point of the box's edge would.
-  const CompletedLegSets completed =
-      Complete(Scene(BesideTheLoneReturn::kOccluder), TrueShelfPose());
-  EXPECT_TRUE(completed.sets.empty());
+TEST(LegCompletionTest, ALoneReturnBesideANearerBoxAtTheLegsRangeCompletesTheShelf) {
+  // The lone return sits right beside the box, as a mixed point of the box's edge would, but at
+  // the range where the two other legs and the preset put the leg's face: it is the leg.
+  const auto points = Scene(BesideTheLoneReturn::kOccluder);
+  const geometry::Pose2 truth = TrueShelfPose();
+  EXPECT_FALSE(Complete(points, truth).sets.empty());
   const Detector detector(PaperModels());
-  EXPECT_TRUE(
-      detector.DetectPoints(Scene(BesideTheLoneReturn::kOccluder), kWlrAlpha, TrueShelfPose())
-          .detections.empty());
+  const DetectionResult r = detector.DetectPoints(points, kWlrAlpha, truth);
+  ASSERT_EQ(r.detections.size(), 1u);
+  const Detection& d = r.detections.front();
+  EXPECT_EQ(d.model, Shelf().name);
+  // Noise free, one leg by a single return: within 1 cm and 10 mrad of the truth.
+  EXPECT_LT((d.T_lidar_shelf.translation() - truth.translation()).norm(), 0.01);
+  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, truth.yaw, Shelf()), 0.01);
+}
+
+TEST(LegCompletionTest, ALoneReturnBesideANearerBoxOffTheLegsRangeMayBeMixedAndDoesNotComplete) {
+  // 4 and 6 cm beyond the leg's face, still within reach of the corner (half the leg's extent
+  // plus corner_margin_m): where a mixed point of the box's edge and the background may lie,
+  // beyond lone_return_tolerance_m (the scene is noise free).
+  const Detector detector(PaperModels());
+  for (double shift : {0.04, 0.06}) {
+    const auto points = Scene(BesideTheLoneReturn::kOccluder, shift);
+    EXPECT_TRUE(Complete(points, TrueShelfPose()).sets.empty()) << shift;
+    EXPECT_TRUE(detector.DetectPoints(points, kWlrAlpha, TrueShelfPose()).detections.empty())
+        << shift;
+  }
+  // With the rule off, not even the return at the leg's range completes the shelf.
+  DetectorConfig off;
+  off.completion.lone_return_tolerance_m = 0.0;
+  off.completion.lone_return_sigmas = 0.0;
+  EXPECT_TRUE(Complete(Scene(BesideTheLoneReturn::kOccluder), TrueShelfPose(), off).sets.empty());
 }
 
 TEST(LegCompletionTest, AWallThroughTheCornerIsNoLeg) {
