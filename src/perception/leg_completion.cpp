@@ -64,9 +64,9 @@ bool ContinuesPastCut(const std::vector<ScanPoint>& points, const Cluster& c, do
 // True when the cut is a single return with a nearer return on the next beam, a depth step
 // in front: what a mixed point looks like (the beam's footprint straddling that nearer
 // object's edge and whatever lies behind, Eq. 1's trailing point; the background part may be
-// too weak to return at all). A leg seen by one return beside an occluder looks the same, so
-// such a return cannot vouch for a corner; a lone return beside a dropout or with farther
-// returns beside it is no mixed point of a nearer object.
+// too weak to return at all). A leg seen by one return beside an occluder looks the same: such a
+// return vouches for a corner only at the leg's range (LoneReturnAtLegRange); a lone return
+// beside a dropout or with farther returns beside it is no mixed point of a nearer object.
 bool MayBeMixedPoint(const std::vector<ScanPoint>& points, const Cluster& c, double step_m) {
   if (c.points.size() != 1) return false;
   const ScanPoint& q = c.points.front();
@@ -215,10 +215,6 @@ Cluster BlendedView(const std::vector<ScanPoint>& points, const Eigen::Vector2d&
   return c;
 }
 
-// True when a blended view's returns can only be this leg's blend, not a neighbour's leg standing
-// behind the corner on its bearing: they lie at most `max_behind_m` (> 0) behind the corner's
-// range, where no leg of another shelf stands (shelves in rows stand 0.2 m apart or more), and
-// they are two or more (one return beside a nearer one may be a mixed point).
 // True when `c` is a single return within `tolerance_m` of the range at which its beam meets the
 // face of a leg standing at `corner` (the corner's range less half the leg's narrower side).
 bool LoneReturnAtLegRange(const Cluster& c, const Eigen::Vector2d& corner,
@@ -228,6 +224,10 @@ bool LoneReturnAtLegRange(const Cluster& c, const Eigen::Vector2d& corner,
   return std::abs(c.points.front().range - face) <= tolerance_m;
 }
 
+// True when a blended view's returns can only be this leg's blend, not a neighbour's leg standing
+// behind the corner on its bearing: they lie at most `max_behind_m` (> 0) behind the corner's
+// range, where no leg of another shelf stands (shelves in rows stand 0.2 m apart or more), and
+// they are two or more (one return beside a nearer one may be a mixed point).
 bool CloseBehindCorner(const Cluster& c, double corner_range, double max_behind_m) {
   if (max_behind_m <= 0.0 || c.points.size() < 2) return false;
   return std::all_of(c.points.begin(), c.points.end(),
