@@ -41,6 +41,7 @@ struct EvalLayoutsOptions {
   std::string dump_failures;
   bool dump_all = false;  // --dump-failures writes every scene, not only the failing ones
   bool no_preset = false;
+  int beams_in_sight = 0;  // 0: the generator's count
 };
 
 /// "lidar_tim571.yaml" -> "tim571".
@@ -68,6 +69,7 @@ eval::LayoutSweepConfig SweepConfig(const EvalLayoutsOptions& opt) {
   config.scenes_per_class = opt.scenes_per_class;
   config.seed0 = opt.seed0;
   config.use_preset = !opt.no_preset;
+  config.min_beams_in_sight = opt.beams_in_sight;
   if (opt.classes.empty()) return config;
   config.classes.clear();
   for (const auto& name : opt.classes) {
@@ -182,6 +184,11 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
   cmd->add_flag("--no-preset", opt->no_preset,
                 "detect without the map's preset (a robot that searches, e.g. after a restart): "
                 "with neighbours about, the first detection is then often another shelf");
+  cmd->add_option("--beams-in-sight", opt->beams_in_sight,
+                  "ideal beams on a target leg for it to count as in line of sight when scenes "
+                  "are sorted into findable or not (default: the generator's 2; 1 counts a leg "
+                  "that peeks past an occluder by one beam)")
+      ->check(CLI::Range(1, 100));
   cmd->add_option("--json", opt->json, "write the table and the failures as JSON");
   auto* dump =
       cmd->add_option("--dump-failures", opt->dump_failures,

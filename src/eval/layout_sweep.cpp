@@ -102,7 +102,11 @@ LayoutSceneResult ScoreLayoutScene(const sim::LayoutScene& scene,
   r.seed = scene.seed;
   r.lidar_name = scene.lidar_name;
   r.noise_sigma_m = scene.lidar.range_noise_sigma_m;
-  r.legs_in_sight = scene.target_legs_in_sight;
+  // Another evaluator may count a leg in sight from fewer (or more) beams than the generator
+  // does when it places occluders: the findable scenes are counted as asked.
+  r.legs_in_sight = config.min_beams_in_sight > 0
+                        ? scene.target_sight.LegsInSight(config.min_beams_in_sight)
+                        : scene.target_legs_in_sight;
   r.standoff_m = scene.target_standoff_m;
   r.T_world_preset = scene.T_world_preset;
   r.stats = result.stats;
@@ -120,7 +124,7 @@ LayoutSceneResult ScoreLayoutScene(const sim::LayoutScene& scene,
   if (target) {
     r.target_model = target->model.name;
     r.T_world_target = target->T_world_shelf;
-    r.findable = scene.target_legs_in_sight >= config.min_legs_in_sight;
+    r.findable = r.legs_in_sight >= config.min_legs_in_sight;
     right = r.first && IsTarget(*r.first, *target, config.right_radius_m);
   }
   r.outcome = Classify(r, right);

@@ -155,10 +155,13 @@ std::vector<std::string> LayoutTableLines(const std::vector<eval::LayoutSummary>
 std::vector<std::string> LayoutLegendLines(const eval::LayoutSweepConfig& config,
                                            const std::string& prefix) {
   std::vector<std::string> lines;
-  lines.push_back(prefix + Format("find: target scenes with >= %d legs in line of sight; right: "
+  const std::string beams =
+      config.min_beams_in_sight > 0 ? Format(" (%d+ beams)", config.min_beams_in_sight) : "";
+  lines.push_back(prefix + Format("find: target scenes with >= %d legs in line of sight%s; right: "
                                   "the target first (its model, centre within %.0f mm); missed / "
                                   "wrong: findable, nothing / something else first;",
-                                  config.min_legs_in_sight, 1e3 * config.right_radius_m));
+                                  config.min_legs_in_sight, beams.c_str(),
+                                  1e3 * config.right_radius_m));
   lines.push_back(prefix + Format("nofind: not findable; nf-wr: not findable, another shelf or a "
                                   "phantom first; phant: detections > %.0f mm from every true "
                                   "shelf; clutd: detections on clutter;",
@@ -214,6 +217,7 @@ nlohmann::json LayoutSweepJson(const std::vector<eval::LayoutSummary>& rows,
                         {"right_radius_m", config.right_radius_m},
                         {"phantom_radius_m", config.phantom_radius_m},
                         {"min_legs_in_sight", config.min_legs_in_sight},
+                        {"min_beams_in_sight", config.min_beams_in_sight},
                         {"accuracy_max_standoff_m", config.accuracy_max_standoff_m},
                         {"rows", table},
                         {"failures", failures},
@@ -263,7 +267,7 @@ std::string WriteLayoutFailure(const std::string& dir, const sim::LayoutScene& s
                  {"lidar", scene.lidar_name},
                  {"noise_sigma_m", scene.lidar.range_noise_sigma_m},
                  {"outcome", std::string(eval::SceneOutcomeName(result.outcome))},
-                 {"legs_in_sight", scene.target_legs_in_sight},
+                 {"legs_in_sight", result.legs_in_sight},
                  {"findable", result.findable},
                  {"standoff_m", scene.target_standoff_m},
                  {"frame", "lidar (the scan's own)"},

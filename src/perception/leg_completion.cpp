@@ -276,8 +276,8 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
   // a leg, such a return at the leg's range is taken for it; a mixed point lies anywhere between
   // the occluder and the background, seldom within the noise of that range. eval-layouts over
   // 100000 scenes (--scenes-per-class 1000, seed0 60001 ... 240001): +78 right first, the same
-  // phantoms; counting a leg in sight from one beam on (not two), seed0 5001 / 20001: +77 / +53
-  // right first, occluded_leg 91.2 -> 95.0 % and 89.4 -> 93.0 %. Clutter (--class clutter
+  // phantoms; counting a leg in sight from one beam on (--beams-in-sight 1), seed0 5001 / 20001:
+  // +53 / +77 right first, occluded_leg 89.4 -> 93.0 % and 91.2 -> 95.0 %. Clutter (--class clutter
   // --scenes-per-class 3000, seed0 1000 / 60000 / 100000 / 200000): 15 -> 17 detections, with
   // the WLR-716 alone 18 -> 20 (a return beside a nearer object where two posts put a corner).
   const double lone_return_tolerance =

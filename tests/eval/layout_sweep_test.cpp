@@ -197,6 +197,40 @@ TEST(LayoutSweepTest, WithoutAPresetTheWholeScanIsSearched) {
   EXPECT_GT(right_first, 0);
 }
 
+// --beams-in-sight: another evaluator may count a leg in line of sight from one beam on (a leg
+// that peeks past an occluder by one beam). The same scenes and detections, counted so: a leg's
+// count never falls, some occluded_leg scenes become findable, and 2 (the generator's own count)
+// changes nothing.
+TEST(LayoutSweepTest, LegsInSightAreCountedFromTheBeamsAsked) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  const sim::LayoutConfig layout = LayoutWithPresets();
+  LayoutSweepConfig config;
+  config.scenes_per_class = 60;
+  config.seed0 = kSeed0;
+  config.classes = {sim::LayoutClass::kOccludedLeg};
+  const perception::Detector detector(models);
+  const auto own = RunLayoutSweep(detector, models, layout, config);
+  config.min_beams_in_sight = 2;
+  const auto two = RunLayoutSweep(detector, models, layout, config);
+  config.min_beams_in_sight = 1;
+  const auto one = RunLayoutSweep(detector, models, layout, config);
+  ASSERT_EQ(own.size(), one.size());
+  ASSERT_EQ(own.size(), two.size());
+  int more_findable = 0;
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    SCOPED_TRACE(own[i].seed);
+    EXPECT_EQ(two[i].legs_in_sight, own[i].legs_in_sight);
+    EXPECT_EQ(two[i].findable, own[i].findable);
+    EXPECT_GE(one[i].legs_in_sight, own[i].legs_in_sight);
+    EXPECT_TRUE(!own[i].findable || one[i].findable);
+    more_findable += one[i].findable && !own[i].findable;
+    // The detections are the scene's, however it is counted.
+    EXPECT_EQ(one[i].detections, own[i].detections);
+    EXPECT_EQ(one[i].phantoms, own[i].phantoms);
+  }
+  EXPECT_GT(more_findable, 0);
+}
+
 // Model confusions are counted where the first detection stands on the target under another
 // model; flagged when the target's model was its runner-up within the margin. Hand-made results.
 TEST(LayoutSweepTest, ModelConfusionsAndTheirRunnerUpMargin) {
