@@ -218,7 +218,8 @@ struct LegCompletionConfig {
                                         ///< blends within max_blend_m count); 0: off
   double lone_return_tolerance_m = 0.025;  ///< [m] a lone return beside a nearer step (what a
                                            ///< mixed point looks like) completes a corner when it
-                                           ///< lies this near the leg's predicted range ...
+                                           ///< lies this near the ranges the leg returns
+                                           ///< from (its nearest point to its centre) ...
   double lone_return_sigmas = 2.0;         ///< [-] ... or this many times the range noise, if more;
                                            ///< both 0: such a return never completes a corner
 };

@@ -197,11 +197,12 @@ TEST(LegCompletionTest, ALoneReturnBesideANearerBoxAtTheLegsRangeCompletesTheShe
 }
 
 TEST(LegCompletionTest, ALoneReturnBesideANearerBoxOffTheLegsRangeMayBeMixedAndDoesNotComplete) {
-  // 4 and 6 cm beyond the leg's face, still within reach of the corner (half the leg's extent
-  // plus corner_margin_m): where a mixed point of the box's edge and the background may lie,
-  // beyond lone_return_tolerance_m (the scene is noise free).
+  // 5.5 and 7 cm beyond the leg's face (3.5 and 5 cm beyond its centre's range), still within
+  // reach of the corner (half the leg's extent plus corner_margin_m): where a mixed point of the
+  // box's edge and the background may lie, beyond lone_return_tolerance_m of any range the leg
+  // returns from (the scene is noise free).
   const Detector detector(PaperModels());
-  for (double shift : {0.04, 0.06}) {
+  for (double shift : {0.055, 0.07}) {
     const auto points = Scene(BesideTheLoneReturn::kOccluder, shift);
     EXPECT_TRUE(Complete(points, TrueShelfPose()).sets.empty()) << shift;
     EXPECT_TRUE(detector.DetectPoints(points, kWlrAlpha, TrueShelfPose()).detections.empty())
