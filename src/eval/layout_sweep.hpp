@@ -27,10 +27,10 @@ struct LayoutSweepConfig {
   double phantom_radius_m = 0.05;  ///< [m] a detection farther than this from every true shelf
                                    ///< is a phantom
   int min_legs_in_sight = 3;       ///< [-] target legs in sight for a scene to be findable
-  int min_beams_in_sight = 0;      ///< [-] ideal beams on a leg for it to count as in sight; 0: the
-                               ///< generator's own count (sim::LayoutConfig::min_beams_in_sight)
-  bool use_preset = true;                ///< hand the detector the scene's preset (false: search
-                                         ///< without one)
+  int min_beams_in_sight = 0;      ///< [-] ideal beams on a leg for it to count as in sight;
+                                   ///< 0: the generator's (LayoutConfig::min_beams_in_sight)
+  bool use_preset = true;          ///< hand the detector the scene's preset (false: search
+                                   ///< without one)
   double accuracy_max_standoff_m = 3.5;  ///< [m] centre and heading errors are gathered up to
                                          ///< this standoff (sensor to the nearest target leg)
 };

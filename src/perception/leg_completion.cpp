@@ -88,7 +88,8 @@ struct Surroundings {
 // True when the cut's returns can be a leg of their own: the object does not go on past them,
 // they do not lie on the line through their beam neighbours (a surface seen at a grazing angle,
 // or mixed points ramping from an object to its background: ContinuesSurface) and a single one
-// is no mixed point, unless it lies where the leg's face is predicted (`at_leg_range`).
+// is no mixed point, unless it lies at a range the predicted leg returns from (`at_leg_range`,
+// LoneReturnAtLegRange).
 bool StandsAlone(const std::vector<ScanPoint>& points, const Cluster& c, const Surroundings& s,
                  bool at_leg_range) {
   if (ContinuesPastCut(points, c, s.step_m, s.max_step_m, s.tolerance_m) ||

@@ -56,13 +56,19 @@ sim::LayoutConfig LayoutWithPresets() {
   return layout;
 }
 
-// The sweep over one generated scene: class `layout_class`, seed `seed` (the radii).
-LayoutSweepConfig OneScene(sim::LayoutClass layout_class, std::uint64_t seed) {
+// The sweep over `count` generated scenes of class `layout_class` from seed `seed0` (the issue's
+// radii).
+LayoutSweepConfig Scenes(sim::LayoutClass layout_class, std::uint64_t seed0, int count) {
   LayoutSweepConfig config;
   config.classes = {layout_class};
-  config.seed0 = seed;
-  config.scenes_per_class = 1;
+  config.seed0 = seed0;
+  config.scenes_per_class = count;
   return config;
+}
+
+// The sweep over one generated scene: class `layout_class`, seed `seed`.
+LayoutSweepConfig OneScene(sim::LayoutClass layout_class, std::uint64_t seed) {
+  return Scenes(layout_class, seed, 1);
 }
 
 // One scene (OneScene) scored on LayoutWithPresets() by a detector with `detector_config`.
@@ -179,10 +185,7 @@ TEST(LayoutSweepTest, EveryClassIsGeneratedAndScored) {
 TEST(LayoutSweepTest, WithoutAPresetTheWholeScanIsSearched) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
-  LayoutSweepConfig config;
-  config.scenes_per_class = 20;
-  config.seed0 = kSeed0;
-  config.classes = {sim::LayoutClass::kOpen};
+  LayoutSweepConfig config = Scenes(sim::LayoutClass::kOpen, kSeed0, 20);
   const perception::Detector detector(models);
   const auto with = RunLayoutSweep(detector, models, layout, config);
   config.use_preset = false;
@@ -204,10 +207,7 @@ TEST(LayoutSweepTest, WithoutAPresetTheWholeScanIsSearched) {
 TEST(LayoutSweepTest, LegsInSightAreCountedFromTheBeamsAsked) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
-  LayoutSweepConfig config;
-  config.scenes_per_class = 60;
-  config.seed0 = kSeed0;
-  config.classes = {sim::LayoutClass::kOccludedLeg};
+  LayoutSweepConfig config = Scenes(sim::LayoutClass::kOccludedLeg, kSeed0, 60);
   const perception::Detector detector(models);
   const auto own = RunLayoutSweep(detector, models, layout, config);
   config.min_beams_in_sight = 2;
