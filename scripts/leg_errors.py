@@ -8,7 +8,12 @@ truth and the `detect` command that reproduces it), runs each scan through the P
 leg's beam and across it, grouped by the leg's returns (scan points within 35 mm of the fitted
 centre) and the scene's range noise, beside the bound sigma / sqrt(returns) that no fit of those
 returns can beat (README, "The close models"). Also the fitted distance between legs along the
-model's width and length against the true one.
+model's width and length against the true one. Then, for the two close models (1075x883 and
+1080x856), how often any decision could tell them apart: for each scene whose first detection
+stands at the target's place, the legs it used, each with the error std measured above for its
+count of returns, are d apart (Mahalanobis, the other model's pose fitted to the true legs) from
+the other model; an ideal decision confuses them with probability Phi(-d / 2). The sum over the
+scenes, beside the confusions the detector made.
 
 usage: leg_errors.py DIR [--models config/models.yaml] [--params FILE] [--module-dir build/python]
                          [--match 0.06] [--json OUT]
@@ -54,12 +59,7 @@ def measure(dump_dir, detector, model_sizes, match_m):
         target = truth.get("target")
         if not target or not truth.get("findable"):
             continue
-        scan = json.load(open(truth_file.replace(".truth.json", ".scan.json")))
-        preset = re.search(r"--preset ([-0-9.e]+),([-0-9.e]+),([-0-9.e]+)", truth["detect"])
-        ranges, points = scan_points(scan)
-        out = detector.detect(ranges, scan["angle_min"], scan["angle_increment"],
-                              tuple(float(v) for v in preset.groups()) if preset else None,
-                              scan["range_min"], scan["range_max"], True)
+        truth, points, out = read_scene(truth_file, detector, True)
         true_corners = corners(model_sizes[target["model"]], target)
         for h in out["hypotheses"]:
             if h["model"] != target["model"] or h["verdict"] not in ("returned", "model"):
@@ -90,13 +90,95 @@ def measure(dump_dir, detector, model_sizes, match_m):
     return legs, edges
 
 
+CLOSE_MODELS = ("t1-rect-1075x883", "t1-rect-1080x856")
+
+
+def read_scene(truth_file, detector, explain):
+    """A dumped scene's truth, its points and the detector's output on it."""
+    truth = json.load(open(truth_file))
+    scan = json.load(open(truth_file.replace(".truth.json", ".scan.json")))
+    preset = re.search(r"--preset ([-0-9.e]+),([-0-9.e]+),([-0-9.e]+)", truth["detect"])
+    ranges, points = scan_points(scan)
+    out = detector.detect(ranges, scan["angle_min"], scan["angle_increment"],
+                          tuple(float(v) for v in preset.groups()) if preset else None,
+                          scan["range_min"], scan["range_max"], explain)
+    return truth, points, out
+
+
+def other_model_distance2(model, legs, sigmas, shelf):
+    """Squared Mahalanobis distance from the true legs `legs` (corner index, position) to the
+    corners of `model` at the pose that fits them best (Gauss-Newton from the true pose);
+    `sigmas`: each leg's (along, across) std."""
+    pose = np.array([shelf["x"], shelf["y"], shelf["yaw"]])
+
+    def residuals(p):
+        c = corners(model, {"x": p[0], "y": p[1], "yaw": p[2]})
+        r = []
+        for (k, q), (s_along, s_across) in zip(legs, sigmas):
+            view = q / np.linalg.norm(q)
+            e = c[k] - q
+            r += [float(e @ view) / s_along, float(view[0] * e[1] - view[1] * e[0]) / s_across]
+        return np.array(r)
+
+    for _ in range(10):
+        r0 = residuals(pose)
+        jac = np.stack([(residuals(pose + 1e-6 * np.eye(3)[i]) - r0) / 1e-6 for i in range(3)],
+                       axis=1)
+        pose = pose + np.linalg.lstsq(jac, -r0, rcond=None)[0]
+    return float(residuals(pose) @ residuals(pose))
+
+
+def ideal_decision(dump_dir, detector, model_sizes, rows, match_m):
+    """(scenes, expected confusions of an ideal decision, the detector's confusions) over the
+    scenes with a close-model target whose first detection stands within 0.05 m of it."""
+    def leg_sigma(noise, returns):
+        """The measured (along, across) std of legs with this many returns at this noise, else of
+        the nearest count measured at it, else sigma / sqrt(returns) both ways."""
+        same = [r for r in rows if r["noise_sigma_m"] == noise]
+        if not same:
+            return noise / math.sqrt(returns), noise / math.sqrt(returns)
+        r = min(same, key=lambda r: abs(r["returns"] - returns))
+        return r["along_std_m"], r["across_std_m"]
+
+    scenes, expected, observed = 0, 0.0, 0
+    for truth_file in sorted(glob.glob(os.path.join(dump_dir, "*.truth.json"))):
+        truth = json.load(open(truth_file))
+        target = truth.get("target")
+        if not target or not truth.get("findable") or target["model"] not in CLOSE_MODELS:
+            continue
+        truth, points, out = read_scene(truth_file, detector, False)
+        if not out["detections"]:
+            continue
+        first = out["detections"][0]
+        if math.hypot(first["x"] - target["x"], first["y"] - target["y"]) > 0.05:
+            continue
+        true_corners = corners(model_sizes[target["model"]], target)
+        legs, sigmas = [], []
+        for leg in (np.array(p) for p in first["legs"]):
+            d = [np.linalg.norm(leg - c) for c in true_corners]
+            k = int(np.argmin(d))
+            if d[k] > match_m:
+                break
+            returns = max(1, int(np.sum(np.linalg.norm(points - leg, axis=1) < 0.035)))
+            legs.append((k, true_corners[k]))
+            sigmas.append(leg_sigma(truth["noise_sigma_m"], returns))
+        else:
+            other = CLOSE_MODELS[1] if target["model"] == CLOSE_MODELS[0] else CLOSE_MODELS[0]
+            d2 = other_model_distance2(model_sizes[other], legs, sigmas, target)
+            scenes += 1
+            expected += 0.5 * math.erfc(math.sqrt(d2) / 2 / math.sqrt(2))
+            observed += first["model"] != target["model"]
+    return scenes, expected, observed
+
+
 def summarise(legs, edges, min_legs=20):
     rows = []
     groups = defaultdict(list)
     for sigma, n, along, across, _ in legs:
         groups[(sigma, n)].append((along, across))
     for (sigma, n), errs in sorted(groups.items()):
-        if len(errs) < min_legs:
+        # No return near the fitted centre: a leg placed by its blend's bearing, not its returns.
+        if len(errs) < min_legs or n == 0:
             continue
         e = np.array(errs)
         rows.append({"noise_sigma_m": sigma, "returns": n, "legs": len(e),
@@ -136,7 +218,8 @@ def main():
     import shelfdock  # noqa: E402  (the built module, found through --module-dir)
 
     detector = shelfdock.Detector(args.models, args.params)
-    legs, edges = measure(args.dump_dir, detector, read_model_sizes(args.models), args.match)
+    model_sizes = read_model_sizes(args.models)
+    legs, edges = measure(args.dump_dir, detector, model_sizes, args.match)
     rows, edge_rows = summarise(legs, edges)
     print("noise  returns  legs  along mean / std [mm]  sigma/sqrt(n) [mm]  ratio  across std [mm]")
     for r in rows:
@@ -147,9 +230,15 @@ def main():
     for e in edge_rows:
         print("%s edges: %d, fitted minus true: mean %+.1f mm, std %.1f mm" % (
             e["edge"], e["count"], 1e3 * e["mean_m"], 1e3 * e["std_m"]))
+    scenes, expected, observed = ideal_decision(args.dump_dir, detector, model_sizes, rows,
+                                                args.match)
+    print("%s / %s at the target's place: %d scenes, an ideal decision on their legs confuses "
+          "%.1f, the detector %d" % (*CLOSE_MODELS, scenes, expected, observed))
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"legs": rows, "edges": edge_rows}, f, indent=1)
+            json.dump({"legs": rows, "edges": edge_rows,
+                       "close_models": {"scenes": scenes, "ideal_confusions": expected,
+                                        "confusions": observed}}, f, indent=1)
 
 
 if __name__ == "__main__":
