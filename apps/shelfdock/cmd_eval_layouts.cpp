@@ -41,6 +41,7 @@ struct EvalLayoutsOptions {
   std::string dump_failures;
   bool dump_all = false;  // --dump-failures writes every scene, not only the failing ones
   bool no_preset = false;
+  bool map_knows_model = false;
   int beams_in_sight = 0;  // 0: the generator's count
 };
 
@@ -69,6 +70,7 @@ eval::LayoutSweepConfig SweepConfig(const EvalLayoutsOptions& opt) {
   config.scenes_per_class = opt.scenes_per_class;
   config.seed0 = opt.seed0;
   config.use_preset = !opt.no_preset;
+  config.map_knows_model = opt.map_knows_model;
   config.min_beams_in_sight = opt.beams_in_sight;
   if (opt.classes.empty()) return config;
   config.classes.clear();
@@ -96,7 +98,9 @@ void DumpFailures(const EvalLayoutsOptions& opt, const std::vector<geometry::She
     if (!r.Failed() && !opt.dump_all) continue;
     sim::LayoutScene scene = sim::GenerateLayoutScene(r.layout_class, r.seed, models, layout);
     if (opt.no_preset) scene.T_world_preset.reset();  // the detect line then has no --preset
-    io::WriteLayoutFailure(opt.dump_failures, scene, r, detect_args);
+    const bool one_model = opt.map_knows_model && !r.target_model.empty();
+    io::WriteLayoutFailure(opt.dump_failures, scene, r,
+                           one_model ? detect_args + " --model " + r.target_model : detect_args);
     ++written;
   }
   std::cout << (opt.dump_all ? "scenes" : "failing scenes") << " written to " << opt.dump_failures
@@ -184,6 +188,10 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
   cmd->add_flag("--no-preset", opt->no_preset,
                 "detect without the map's preset (a robot that searches, e.g. after a restart): "
                 "with neighbours about, the first detection is then often another shelf");
+  cmd->add_flag("--map-knows-model", opt->map_knows_model,
+                "the map names the target's model too: detect with that model alone, as "
+                "`shelfdock detect --model NAME` (the 1075x883 and 1080x856 are then never "
+                "confused)");
   cmd->add_option("--beams-in-sight", opt->beams_in_sight,
                   "ideal beams on a target leg for it to count as in line of sight when scenes "
                   "are sorted into findable or not (default: the generator's 2; 1 counts a leg "

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -140,12 +142,27 @@ std::vector<LayoutSceneResult> RunLayoutSweep(const perception::Detector& detect
                                               const LayoutSweepConfig& config) {
   std::vector<LayoutSceneResult> results;
   results.reserve(config.classes.size() * static_cast<std::size_t>(config.scenes_per_class));
+  // A robot sent to a shelf its map names by model as well as by place detects with that model
+  // alone (as `shelfdock detect --model NAME`): one detector per model, with the same parameters.
+  std::map<std::string, perception::Detector> by_model;
+  auto detector_for = [&](const sim::LayoutScene& scene) -> const perception::Detector& {
+    const std::optional<sim::ShelfInstance> target = scene.Target();
+    if (!config.map_knows_model || !target) return detector;
+    auto it = by_model.find(target->model.name);
+    if (it == by_model.end()) {
+      it =
+          by_model
+              .emplace(target->model.name, perception::Detector({target->model}, detector.config()))
+              .first;
+    }
+    return it->second;
+  };
   for (const sim::LayoutClass layout_class : config.classes) {
     for (int i = 0; i < config.scenes_per_class; ++i) {
       const std::uint64_t seed = config.seed0 + static_cast<std::uint64_t>(i);
       const sim::LayoutScene scene =
           sim::GenerateLayoutScene(layout_class, seed, models, layout_config);
-      const perception::DetectionResult detected = detector.Detect(
+      const perception::DetectionResult detected = detector_for(scene).Detect(
           sim::SimulateLayoutScan(scene), config.use_preset ? scene.PresetInLidar() : std::nullopt);
       results.push_back(ScoreLayoutScene(scene, detected, config));
     }

@@ -31,6 +31,8 @@ struct LayoutSweepConfig {
                                    ///< 0: the generator's (LayoutConfig::min_beams_in_sight)
   bool use_preset = true;          ///< hand the detector the scene's preset (false: search
                                    ///< without one)
+  bool map_knows_model = false;    ///< the map also names the target's model: scenes with a
+                                   ///< target are detected with that model alone
   double accuracy_max_standoff_m = 3.5;  ///< [m] centre and heading errors are gathered up to
                                          ///< this standoff (sensor to the nearest target leg)
 };

@@ -170,6 +170,11 @@ std::vector<std::string> LayoutLegendLines(const eval::LayoutSweepConfig& config
                                   "noise, centre and heading error p50/p95; |dL|/|dW|: mean size "
                                   "error [mm]",
                                   config.accuracy_max_standoff_m));
+  if (config.map_knows_model) {
+    lines.push_back(prefix +
+                    "the map names the target's model: scenes with a target were "
+                    "detected with that model alone");
+  }
   return lines;
 }
 
@@ -218,6 +223,7 @@ nlohmann::json LayoutSweepJson(const std::vector<eval::LayoutSummary>& rows,
                         {"phantom_radius_m", config.phantom_radius_m},
                         {"min_legs_in_sight", config.min_legs_in_sight},
                         {"min_beams_in_sight", config.min_beams_in_sight},
+                        {"map_knows_model", config.map_knows_model},
                         {"accuracy_max_standoff_m", config.accuracy_max_standoff_m},
                         {"rows", table},
                         {"failures", failures},

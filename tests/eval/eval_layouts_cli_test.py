@@ -62,6 +62,23 @@ def main():
         check_reproduction(shelfdock, source, t)
     expect_bad_input(shelfdock, source, ["eval-layouts", "--dump-all"], "--dump-failures")
 
+    # --map-knows-model: the target's model alone; each dumped detect line names it (--model)
+    # and reproduces the sweep's first detection; the JSON says how the sweep ran.
+    known, known_report = work / "layout_known_model", work / "layouts_known_model.json"
+    shutil.rmtree(known, ignore_errors=True)
+    r = run(shelfdock, ["eval-layouts", "--scenes-per-class", "6", "--class", "against_wall",
+                        "--map-knows-model", "--json", str(known_report), "--dump-failures",
+                        str(known), "--dump-all"], source)
+    assert r.returncode == 0, f"eval-layouts --map-knows-model: exit {r.returncode}\n{r.stderr}"
+    assert "the map names the target's model" in r.stdout, r.stdout
+    assert json.loads(known_report.read_text())["map_knows_model"] is True
+    truths = sorted(known.glob("*.truth.json"))
+    assert len(truths) == 6, f"{len(truths)} scenes dumped of 6"
+    for t in truths:
+        truth = json.loads(t.read_text())
+        assert f"--model {truth['target']['model']}" in truth["detect"], truth["detect"]
+        check_reproduction(shelfdock, source, t)
+
     expect_bad_input(shelfdock, source, ["eval-layouts", "--class", "warehouse"], "--class")
     expect_bad_input(shelfdock, source, ["eval-layouts", "--scenes-per-class", "0"],
                      "--scenes-per-class")
