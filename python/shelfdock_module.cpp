@@ -60,8 +60,10 @@ shelfdock::geometry::LaserScan MakeScan(const Ranges& ranges, double angle_min,
 class PyDetector {
  public:
   PyDetector(const std::filesystem::path& models,
-             const std::optional<std::filesystem::path>& params)
-      : detector_(shelfdock::io::ReadShelfModels(models.string()),
+             const std::optional<std::filesystem::path>& params,
+             const std::vector<std::string>& only)
+      : detector_(shelfdock::io::SelectModels(shelfdock::io::ReadShelfModels(models.string()), only,
+                                              models.string(), "only"),
                   params ? shelfdock::io::ReadDetectorConfig(params->string())
                          : shelfdock::perception::DetectorConfig{}) {}
 
@@ -107,9 +109,12 @@ The shelf detector, configured once.
 
 models: shelf models YAML (e.g. config/models.yaml; installed under share/shelfdock/config).
 params: detector parameters YAML, or None for the built-in defaults.
+only: names of the models to look for (the map names the shelf's model), or [] for all of them.
 Raises shelfdock.InputError (a ValueError) naming the file and key on bad input.)doc")
-      .def(py::init<const std::filesystem::path&, const std::optional<std::filesystem::path>&>(),
-           py::arg("models"), py::arg("params") = py::none())
+      .def(py::init<const std::filesystem::path&, const std::optional<std::filesystem::path>&,
+                    const std::vector<std::string>&>(),
+           py::arg("models"), py::arg("params") = py::none(),
+           py::arg("only") = std::vector<std::string>{})
       .def("detect", &PyDetector::Detect, py::arg("ranges"), py::arg("angle_min"),
            py::arg("angle_increment"), py::arg("preset") = py::none(), py::arg("range_min") = 0.0,
            py::arg("range_max") = std::numeric_limits<double>::infinity(),

@@ -2,7 +2,6 @@
 // `--scan -`, streamed) and prints one JSON line per scan: {"detections": [...], "stats": {...}},
 // detections best first, in the scan's frame, plus "base"/"map" poses when --extrinsic /
 // --robot-pose are given.
-#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -45,30 +44,6 @@ struct DetectOptions {
 // The explain page holds every point of every scan: past this many scans it gets too heavy for a
 // browser to open comfortably; cut the file first (one scan per line in JSON Lines).
 constexpr std::size_t kMaxHtmlScans = 200;
-
-/// The models named by --model, in the order given (all of them when none is named); a name the
-/// file does not hold is an error naming the file, the flag and the names it does hold.
-std::vector<geometry::ShelfModel> KeepModels(const std::vector<geometry::ShelfModel>& models,
-                                             const std::vector<std::string>& names,
-                                             const std::string& path) {
-  if (names.empty()) return models;
-  std::vector<geometry::ShelfModel> kept;
-  for (const std::string& name : names) {
-    const auto it = std::find_if(models.begin(), models.end(),
-                                 [&](const geometry::ShelfModel& m) { return m.name == name; });
-    if (it == models.end()) {
-      std::string message = "no model '";
-      message.append(name).append("' in the file; it holds");
-      for (const auto& m : models) message.append(" ").append(m.name);
-      throw io::InputError(path, "--model", message);
-    }
-    if (std::none_of(kept.begin(), kept.end(),
-                     [&](const geometry::ShelfModel& m) { return m.name == name; })) {
-      kept.push_back(*it);
-    }
-  }
-  return kept;
-}
 
 std::optional<geometry::Pose2> OptionalPose(const std::string& text, const std::string& flag) {
   if (text.empty()) return std::nullopt;
@@ -123,7 +98,7 @@ int RunDetect(const DetectOptions& opt) {
   // Parse everything before detecting anything: bad input never yields partial output.
   DetectJob job{
       perception::Detector(
-          KeepModels(io::ReadShelfModels(opt.models), opt.model_names, opt.models),
+          io::SelectModels(io::ReadShelfModels(opt.models), opt.model_names, opt.models, "--model"),
           opt.params.empty() ? perception::DetectorConfig{} : io::ReadDetectorConfig(opt.params)),
       OptionalPose(opt.preset, "--preset"), OptionalPose(opt.extrinsic, "--extrinsic"),
       OptionalPose(opt.robot_pose, "--robot-pose"), opt.explain};

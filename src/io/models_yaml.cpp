@@ -1,5 +1,7 @@
 #include "io/models_yaml.hpp"
 
+#include <algorithm>
+
 #include "io/input_limits.hpp"
 #include "io/yaml_fields.hpp"
 
@@ -50,6 +52,27 @@ std::vector<geometry::ShelfModel> ReadShelfModels(const std::string& path) {
   }
   top.Reject(geometry::FindConfigViolation(models));  // keys `models[i].name`, ...
   return models;
+}
+
+std::vector<geometry::ShelfModel> SelectModels(const std::vector<geometry::ShelfModel>& models,
+                                               const std::vector<std::string>& names,
+                                               const std::string& path, const std::string& field) {
+  if (names.empty()) return models;
+  auto named = [](const std::string& name) {
+    return [&name](const geometry::ShelfModel& m) { return m.name == name; };
+  };
+  std::vector<geometry::ShelfModel> kept;
+  for (const std::string& name : names) {
+    const auto it = std::find_if(models.begin(), models.end(), named(name));
+    if (it == models.end()) {
+      std::string message = "no model '";
+      message.append(name).append("' in the file; it holds");
+      for (const auto& m : models) message.append(" ").append(m.name);
+      throw InputError(path, field, message);
+    }
+    if (std::none_of(kept.begin(), kept.end(), named(name))) kept.push_back(*it);
+  }
+  return kept;
 }
 
 }  // namespace shelfdock::io

@@ -70,6 +70,25 @@ def test_finds_the_true_shelf(models, simulated):
         assert len(d["covariance"]) == 3 and d["legs_used"] >= 3
 
 
+def test_only_the_models_the_map_names(models, simulated):
+    """only=[name]: the detector looks for that model alone (the map names the shelf's model):
+    the paper scenario's shelf is found as its own model and, named as another, not at all."""
+    _, scans, truth = simulated
+    own = shelfdock.Detector(models=models, only=[truth[0]["model"]])
+    assert own.models == [truth[0]["model"]]
+    other = next(m for m in shelfdock.Detector(models=models).models if m != truth[0]["model"])
+    elsewhere = shelfdock.Detector(models=models, only=[other])
+    for scan, t in zip(scans, truth):
+        p = t["preset"]
+        d = module_detect(own, scan, preset=(p["x"], p["y"], p["yaw"]))["detections"][0]
+        assert d["model"] == t["model"]
+        assert math.hypot(d["x"] - t["x"], d["y"] - t["y"]) <= TOL_M
+        forced = module_detect(elsewhere, scan, preset=(p["x"], p["y"], p["yaw"]))["detections"]
+        assert not any(math.hypot(x["x"] - t["x"], x["y"] - t["y"]) <= 0.05 for x in forced), forced
+    with pytest.raises(shelfdock.InputError, match="only: no model 'no-such-model'"):
+        shelfdock.Detector(models=models, only=["no-such-model"])
+
+
 def test_params_file_and_array_types(models, source_dir, simulated):
     _, scans, _ = simulated
     a = shelfdock.Detector(models=str(models), params=str(source_dir / "config/detector.yaml"))
