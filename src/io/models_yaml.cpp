@@ -1,7 +1,9 @@
 #include "io/models_yaml.hpp"
 
 #include <algorithm>
+#include <string>
 
+#include "io/input_error.hpp"
 #include "io/input_limits.hpp"
 #include "io/yaml_fields.hpp"
 
