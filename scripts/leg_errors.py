@@ -59,22 +59,19 @@ def measure(dump_dir, detector, model_sizes, match_m):
         target = truth.get("target")
         if not target or not truth.get("findable"):
             continue
-        truth, points, out = read_scene(truth_file, detector, True)
+        points, out = detect_scene(truth_file, truth, detector, True)
         true_corners = corners(model_sizes[target["model"]], target)
         for h in out["hypotheses"]:
             if h["model"] != target["model"] or h["verdict"] not in ("returned", "model"):
                 continue
             fitted = [np.array(leg) for leg in h["legs"]]
-            which = []
-            for leg in fitted:
-                d = [np.linalg.norm(leg - c) for c in true_corners]
-                which.append(int(np.argmin(d)) if min(d) <= match_m else -1)
-            if -1 in which or len(set(which)) != len(which):
+            which = match_corners(fitted, true_corners, match_m)
+            if which is None:
                 continue
             for leg, k in zip(fitted, which):
                 err = leg - true_corners[k]
                 view = true_corners[k] / np.linalg.norm(true_corners[k])
-                returns = int(np.sum(np.linalg.norm(points - leg, axis=1) < 0.035))
+                returns = returns_near(points, leg)
                 legs.append((truth["noise_sigma_m"], returns, float(err @ view),
                              float(view[0] * err[1] - view[1] * err[0]),
                              float(np.linalg.norm(true_corners[k]))))
@@ -93,16 +90,30 @@ def measure(dump_dir, detector, model_sizes, match_m):
 CLOSE_MODELS = ("t1-rect-1075x883", "t1-rect-1080x856")
 
 
-def read_scene(truth_file, detector, explain):
-    """A dumped scene's truth, its points and the detector's output on it."""
-    truth = json.load(open(truth_file))
+def detect_scene(truth_file, truth, detector, explain):
+    """A dumped scene's points and the detector's output on them (`truth`: its truth file, read)."""
     scan = json.load(open(truth_file.replace(".truth.json", ".scan.json")))
     preset = re.search(r"--preset ([-0-9.e]+),([-0-9.e]+),([-0-9.e]+)", truth["detect"])
     ranges, points = scan_points(scan)
     out = detector.detect(ranges, scan["angle_min"], scan["angle_increment"],
                           tuple(float(v) for v in preset.groups()) if preset else None,
                           scan["range_min"], scan["range_max"], explain)
-    return truth, points, out
+    return points, out
+
+
+def match_corners(fitted, true_corners, match_m):
+    """The true corner each fitted leg stands on (within match_m), or None when a leg stands on
+    none or two legs on the same one."""
+    which = []
+    for leg in fitted:
+        d = [np.linalg.norm(leg - c) for c in true_corners]
+        which.append(int(np.argmin(d)) if min(d) <= match_m else -1)
+    return None if -1 in which or len(set(which)) != len(which) else which
+
+
+def returns_near(points, leg):
+    """The scan points within 35 mm of a fitted leg centre: the returns it was fitted to."""
+    return int(np.sum(np.linalg.norm(points - leg, axis=1) < 0.035))
 
 
 def other_model_distance2(model, legs, sigmas, shelf):
@@ -146,28 +157,25 @@ def ideal_decision(dump_dir, detector, model_sizes, rows, match_m):
         target = truth.get("target")
         if not target or not truth.get("findable") or target["model"] not in CLOSE_MODELS:
             continue
-        truth, points, out = read_scene(truth_file, detector, False)
+        points, out = detect_scene(truth_file, truth, detector, False)
         if not out["detections"]:
             continue
         first = out["detections"][0]
         if math.hypot(first["x"] - target["x"], first["y"] - target["y"]) > 0.05:
             continue
         true_corners = corners(model_sizes[target["model"]], target)
-        legs, sigmas = [], []
-        for leg in (np.array(p) for p in first["legs"]):
-            d = [np.linalg.norm(leg - c) for c in true_corners]
-            k = int(np.argmin(d))
-            if d[k] > match_m:
-                break
-            returns = max(1, int(np.sum(np.linalg.norm(points - leg, axis=1) < 0.035)))
-            legs.append((k, true_corners[k]))
-            sigmas.append(leg_sigma(truth["noise_sigma_m"], returns))
-        else:
-            other = CLOSE_MODELS[1] if target["model"] == CLOSE_MODELS[0] else CLOSE_MODELS[0]
-            d2 = other_model_distance2(model_sizes[other], legs, sigmas, target)
-            scenes += 1
-            expected += 0.5 * math.erfc(math.sqrt(d2) / 2 / math.sqrt(2))
-            observed += first["model"] != target["model"]
+        fitted = [np.array(leg) for leg in first["legs"]]
+        which = match_corners(fitted, true_corners, match_m)
+        if which is None:
+            continue
+        legs = [(k, true_corners[k]) for k in which]
+        sigmas = [leg_sigma(truth["noise_sigma_m"], max(1, returns_near(points, leg)))
+                  for leg in fitted]
+        other = CLOSE_MODELS[1] if target["model"] == CLOSE_MODELS[0] else CLOSE_MODELS[0]
+        d2 = other_model_distance2(model_sizes[other], legs, sigmas, target)
+        scenes += 1
+        expected += 0.5 * math.erfc(math.sqrt(d2) / 2 / math.sqrt(2))
+        observed += first["model"] != target["model"]
     return scenes, expected, observed
 
 
