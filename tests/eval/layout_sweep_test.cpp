@@ -72,10 +72,11 @@ LayoutSweepConfig OneScene(sim::LayoutClass layout_class, std::uint64_t seed) {
   return Scenes(layout_class, seed, 1);
 }
 
-// One scene (OneScene) scored on LayoutWithPresets() by a detector with `detector_config`.
-std::vector<LayoutSceneResult> RunOneScene(const std::vector<geometry::ShelfModel>& models,
-                                           const LayoutSweepConfig& config,
-                                           const perception::DetectorConfig& detector_config = {}) {
+// The scenes of `config` (Scenes, OneScene) scored on LayoutWithPresets() by a detector with
+// `detector_config`.
+std::vector<LayoutSceneResult> RunSweep(const std::vector<geometry::ShelfModel>& models,
+                                        const LayoutSweepConfig& config,
+                                        const perception::DetectorConfig& detector_config = {}) {
   return RunLayoutSweep(perception::Detector(models, detector_config), models, LayoutWithPresets(),
                         config);
 }
@@ -185,12 +186,10 @@ TEST(LayoutSweepTest, EveryClassIsGeneratedAndScored) {
 // around the preset (paper 3.1) but the whole scan, and the target is still found in the open.
 TEST(LayoutSweepTest, WithoutAPresetTheWholeScanIsSearched) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const sim::LayoutConfig layout = LayoutWithPresets();
   LayoutSweepConfig config = Scenes(sim::LayoutClass::kOpen, kSeed0, 20);
-  const perception::Detector detector(models);
-  const auto with = RunLayoutSweep(detector, models, layout, config);
+  const auto with = RunSweep(models, config);
   config.use_preset = false;
-  const auto without = RunLayoutSweep(detector, models, layout, config);
+  const auto without = RunSweep(models, config);
   ASSERT_EQ(with.size(), without.size());
   int right_first = 0;
   for (std::size_t i = 0; i < with.size(); ++i) {
@@ -207,14 +206,12 @@ TEST(LayoutSweepTest, WithoutAPresetTheWholeScanIsSearched) {
 // changes nothing.
 TEST(LayoutSweepTest, LegsInSightAreCountedFromTheBeamsAsked) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const sim::LayoutConfig layout = LayoutWithPresets();
   LayoutSweepConfig config = Scenes(sim::LayoutClass::kOccludedLeg, kSeed0, 60);
-  const perception::Detector detector(models);
-  const auto own = RunLayoutSweep(detector, models, layout, config);
+  const auto own = RunSweep(models, config);
   config.min_beams_in_sight = 2;
-  const auto two = RunLayoutSweep(detector, models, layout, config);
+  const auto two = RunSweep(models, config);
   config.min_beams_in_sight = 1;
-  const auto one = RunLayoutSweep(detector, models, layout, config);
+  const auto one = RunSweep(models, config);
   ASSERT_EQ(own.size(), one.size());
   ASSERT_EQ(own.size(), two.size());
   int more_findable = 0;
@@ -273,7 +270,6 @@ TEST(LayoutSweepTest, ModelConfusionsAndTheirRunnerUpMargin) {
 // every right-first scene stays right first, and no phantom or wrong shelf appears.
 TEST(LayoutSweepTest, WhenTheMapNamesTheModelTheCloseModelsAreNeverConfused) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const perception::Detector detector(models);
   auto confusions = [](const std::vector<LayoutSceneResult>& results) {
     return std::count_if(results.begin(), results.end(), [](const LayoutSceneResult& r) {
       return r.first && r.first->model != r.target_model && !r.target_model.empty() &&
@@ -282,9 +278,9 @@ TEST(LayoutSweepTest, WhenTheMapNamesTheModelTheCloseModelsAreNeverConfused) {
   };
   for (const sim::LayoutClass c : {sim::LayoutClass::kOpen, sim::LayoutClass::kAgainstWall}) {
     LayoutSweepConfig config = Scenes(c, 1, 200);
-    const auto without = RunLayoutSweep(detector, models, LayoutWithPresets(), config);
+    const auto without = RunSweep(models, config);
     config.map_knows_model = true;
-    const auto with = RunLayoutSweep(detector, models, LayoutWithPresets(), config);
+    const auto with = RunSweep(models, config);
     ASSERT_EQ(with.size(), without.size());
     EXPECT_EQ(confusions(with), 0) << sim::LayoutClassName(c);
     for (std::size_t i = 0; i < with.size(); ++i) {
@@ -342,14 +338,14 @@ TEST(LayoutSceneTest, TwoFarLegsEachSeenOnlyBlendedCompleteTheShelf) {
 TEST(LayoutSceneTest, LegsThatMayBeBlendsAndLookTooThinMakeNoPhantom) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAisle, 149);  // the radius
-  const auto with = RunOneScene(models, config);
+  const auto with = RunSweep(models, config);
   ASSERT_EQ(with.size(), 1u);
   ASSERT_EQ(with[0].lidar_name, "tim571");
   EXPECT_EQ(with[0].phantoms, 0);
   EXPECT_GE(with[0].stats.rejected.blended_legs, 1);
   perception::DetectorConfig off;
   off.evidence.blend_max_returns = 0;
-  const auto without = RunOneScene(models, config, off);
+  const auto without = RunSweep(models, config, off);
   ASSERT_EQ(without.size(), 1u);
   ASSERT_TRUE(without[0].first.has_value());
   EXPECT_GT(without[0].first->nearest_shelf_m, config.phantom_radius_m);
@@ -364,19 +360,19 @@ TEST(LayoutSceneTest, LegsThatMayBeBlendsAndLookTooThinMakeNoPhantom) {
 TEST(LayoutSceneTest, LegsJustInFrontOfAWallAreCutOutOfIt) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAgainstWall, 174);
-  const auto with = RunOneScene(models, config);
+  const auto with = RunSweep(models, config);
   ASSERT_EQ(with.size(), 1u);
   ASSERT_EQ(with[0].lidar_name, "wlr-716");
   ExpectRightFirstWithFourLegs(with);
   perception::DetectorConfig off;
   off.preprocess.split_inner_pieces = false;
-  const auto completed = RunOneScene(models, config, off);
+  const auto completed = RunSweep(models, config, off);
   ASSERT_EQ(completed.size(), 1u);
   EXPECT_EQ(completed[0].outcome, SceneOutcome::kRightFirst);
   EXPECT_GT(completed[0].stats.completed_sets, 0);
   EXPECT_LT(completed[0].centre_error_m, 0.02);
   off.completion.surface_offset_sigmas = 0.0;
-  ExpectMissed(RunOneScene(models, config, off));
+  ExpectMissed(RunSweep(models, config, off));
 }
 
 // eval-layouts' person_beside_leg scenes 243 (TiM571, 10 mm noise, a 1075 x 883) and 339
@@ -392,8 +388,8 @@ TEST(LayoutSceneTest, APersonUnderAShelfsEdgeDoesNotHideIt) {
   for (const std::uint64_t seed : {243u, 339u}) {
     SCOPED_TRACE(seed);
     const LayoutSweepConfig config = OneScene(sim::LayoutClass::kPersonBesideLeg, seed);
-    ExpectRightFirstWithFourLegs(RunOneScene(models, config));
-    ExpectMissed(RunOneScene(models, config, off));
+    ExpectRightFirstWithFourLegs(RunSweep(models, config));
+    ExpectMissed(RunSweep(models, config, off));
   }
 }
 
@@ -414,14 +410,14 @@ TEST(LayoutSceneTest, ALegWithAPersonAgainstItStandsOutFromThePerson) {
   for (const std::uint64_t seed : {14u, 5684u, 5966u}) {
     SCOPED_TRACE(seed);
     const LayoutSweepConfig config = OneScene(sim::LayoutClass::kPersonBesideLeg, seed);
-    const auto r = RunOneScene(models, config);
+    const auto r = RunSweep(models, config);
     ASSERT_EQ(r.size(), 1u);
     EXPECT_EQ(r[0].outcome, SceneOutcome::kRightFirst);
     ASSERT_TRUE(r[0].first.has_value());
     EXPECT_GE(r[0].first->legs_used, 3);
     EXPECT_GT(r[0].stats.completed_sets, 0);
     EXPECT_LT(r[0].centre_error_m, 0.02);
-    ExpectMissed(RunOneScene(models, config, off));
+    ExpectMissed(RunSweep(models, config, off));
   }
 }
 
@@ -433,7 +429,7 @@ TEST(LayoutSceneTest, ALegWithAPersonAgainstItStandsOutFromThePerson) {
 TEST(LayoutSceneTest, AForeignLegInsideCountsWhenALegIsOnlyBlended) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const LayoutSweepConfig config = OneScene(sim::LayoutClass::kMixedNeighbours, 20266);
-  const auto r = RunOneScene(models, config);
+  const auto r = RunSweep(models, config);
   ASSERT_EQ(r.size(), 1u);
   ASSERT_EQ(r[0].lidar_name, "wlr-716");
   EXPECT_EQ(r[0].phantoms, 0);
@@ -464,13 +460,13 @@ TEST(LayoutSceneTest, ANeighboursLegOnAPhantomsEdgeLineCountsAsInside) {
   for (const auto& [layout_class, seed] : scenes) {
     SCOPED_TRACE(seed);
     const LayoutSweepConfig config = OneScene(layout_class, seed);
-    const auto r = RunOneScene(models, config);
+    const auto r = RunSweep(models, config);
     ASSERT_EQ(r.size(), 1u);
     EXPECT_EQ(r[0].phantoms, 0);
     if (r[0].first) {
       EXPECT_LE(r[0].first->nearest_shelf_m, config.phantom_radius_m);
     }
-    const auto without = RunOneScene(models, config, off);
+    const auto without = RunSweep(models, config, off);
     ASSERT_EQ(without.size(), 1u);
     EXPECT_GT(without[0].phantoms, 0);
   }
