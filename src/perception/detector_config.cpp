@@ -119,6 +119,10 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           ">= 0 (0: off)");
   k.Check(c.completion.candidate_blend_max_m >= 0.0, "completion.candidate_blend_max_m",
           ">= 0 (0: off)");
+  k.Check(c.completion.blended_candidate_max_returns >= 0,
+          "completion.blended_candidate_max_returns", ">= 0 (0: off)");
+  k.Check(c.completion.blended_candidate_max_step_m > 0.0,
+          "completion.blended_candidate_max_step_m", "> 0");
   k.Check(c.completion.lone_return_tolerance_m >= 0.0, "completion.lone_return_tolerance_m",
           ">= 0");
   k.Check(c.completion.lone_return_sigmas >= 0.0, "completion.lone_return_sigmas",
