@@ -126,6 +126,7 @@ void ReadCompletion(YamlFields f, perception::LegCompletionConfig& c) {
   f.Read("surface_offset_sigmas", c.surface_offset_sigmas);
   f.Read("surface_open_end", c.surface_open_end);
   f.Read("candidate_blend_max_m", c.candidate_blend_max_m);
+  f.Read("candidate_blend_far_max_m", c.candidate_blend_far_max_m);
   f.Read("blended_candidate_max_returns", c.blended_candidate_max_returns);
   f.Read("blended_candidate_max_step_m", c.blended_candidate_max_step_m);
   f.Read("lone_return_tolerance_m", c.lone_return_tolerance_m);

@@ -119,6 +119,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           ">= 0 (0: off)");
   k.Check(c.completion.candidate_blend_max_m >= 0.0, "completion.candidate_blend_max_m",
           ">= 0 (0: off)");
+  k.Check(c.completion.candidate_blend_far_max_m >= 0.0, "completion.candidate_blend_far_max_m",
+          ">= 0 (at most candidate_blend_max_m: off)");
   k.Check(c.completion.blended_candidate_max_returns >= 0,
           "completion.blended_candidate_max_returns", ">= 0 (0: off)");
   k.Check(c.completion.blended_candidate_max_step_m > 0.0,

@@ -202,24 +202,27 @@ struct LegCompletionConfig {
   double max_blend_m = 0.3;       ///< [m] with none there, returns on the corner's bearing up to
                                   ///< this far behind it and in front of their background are
                                   ///< the leg blended with it (its bearing only); 0: off
-  double blended_max_err_sum_m = 0.03;    ///< [m] a set with a blended leg: Eq. 2 err_sum bound
-  double blended_min_confidence = 0.5;    ///< [-] and the confidence it must reach
-  double surface_min_offset_m = 0.025;    ///< [m] returns at a corner that lie on a surface (a wall
-                                          ///< a few cm behind the leg) are its leg when they stand
-                                          ///< this far in front of the surface beside them ...
-  double surface_offset_sigmas = 3.5;     ///< [-] ... and this many times the noise of that
-                                          ///< offset; 0: off (such returns are no leg)
-  bool surface_open_end = true;           ///< a leg at the end of what it touches (a person's leg
-                                          ///< beside it), the background past it, is measured
-                                          ///< against that surface alone
-  double candidate_blend_max_m = 0.06;    ///< [m] a blend the search took as a leg completes a
-                                          ///< corner alone when its returns lie at most this far
-                                          ///< behind the corner (two returns or more; only
-                                          ///< blends within max_blend_m count); 0: off
-  int blended_candidate_max_returns = 3;  ///< a leg the search took at a corner (within
-                                          ///< corner_margin_m), of at most this many returns
-                                          ///< lying behind the corner's centre on average,
-                                          ///< completes it by its bearing ... ; 0: off
+  double blended_max_err_sum_m = 0.03;  ///< [m] a set with a blended leg: Eq. 2 err_sum bound
+  double blended_min_confidence = 0.5;  ///< [-] and the confidence it must reach
+  double surface_min_offset_m = 0.025;  ///< [m] returns at a corner that lie on a surface (a wall
+                                        ///< a few cm behind the leg) are its leg when they stand
+                                        ///< this far in front of the surface beside them ...
+  double surface_offset_sigmas = 3.5;   ///< [-] ... and this many times the noise of that
+                                        ///< offset; 0: off (such returns are no leg)
+  bool surface_open_end = true;         ///< a leg at the end of what it touches (a person's leg
+                                        ///< beside it), the background past it, is measured
+                                        ///< against that surface alone
+  double candidate_blend_max_m = 0.06;  ///< [m] a blend the search took as a leg completes a
+                                        ///< corner alone when its returns lie at most this far
+                                        ///< behind the corner (two returns or more; only
+                                        ///< blends within max_blend_m count); 0: off
+  double candidate_blend_far_max_m = 0.15;  ///< [m] ... or at most this far behind, when they
+                                            ///< are at most blended_candidate_max_returns with the
+                                            ///< background as blended_candidate_max_step_m says
+  int blended_candidate_max_returns = 3;    ///< a leg the search took at a corner (within
+                                            ///< corner_margin_m), of at most this many returns
+                                            ///< lying behind the corner's centre on average,
+                                            ///< completes it by its bearing ... ; 0: off
   double blended_candidate_max_step_m = 0.3;  ///< [m] ... when the beams either side return from
                                               ///< a depth step behind it, at most this far
   double lone_return_tolerance_m = 0.025;     ///< [m] a lone return beside a nearer step (what a

@@ -238,21 +238,14 @@ bool CloseBehindCorner(const Cluster& c, double corner_range, double max_behind_
                      [&](const ScanPoint& q) { return q.range <= corner_range + max_behind_m; });
 }
 
-// True when `c`, returns at a corner that the search already took as a leg (and, with its
-// tolerances, fitted into no shelf), may be the corner's leg seen blended with a background close
-// behind it, which the leg fit placed behind the leg: a leg's clean returns lie on its near faces,
-// in front of its centre, while these lie behind the corner's centre on average; they are at most
-// `max_returns` (a thin leg's few beams), and the beams either side return from a depth step
-// (`step_m`) behind them, so they are an object of their own, not part of a larger one, but from
-// at most `max_step_m` behind, near enough to blend into one echo with a leg (farther, the
-// background returns its own echo, and returns this far behind a leg are something else).
-bool BlendedCandidateAtCorner(const std::vector<ScanPoint>& scan_points, const Cluster& c,
-                              const Eigen::Vector2d& corner, int max_returns, double step_m,
-                              double max_step_m) {
-  if (c.points.empty() || c.points.size() > static_cast<std::size_t>(max_returns) ||
-      c.centroid.norm() < corner.norm()) {
-    return false;
-  }
+// True when `c` may be a thin leg seen only together with what stands close behind it: at most
+// `max_returns` returns (a thin leg's few beams), and the beams either side return from a depth
+// step (`step_m`) behind them, so they are an object of their own, not part of a larger one, but
+// from at most `max_step_m` behind, near enough to blend into one echo with a leg (farther, the
+// background returns its own echo, and returns in front of it are something else).
+bool MayBeBlendBeforeBackground(const std::vector<ScanPoint>& scan_points, const Cluster& c,
+                                int max_returns, double step_m, double max_step_m) {
+  if (c.points.empty() || c.points.size() > static_cast<std::size_t>(max_returns)) return false;
   const SilhouetteEdges edges =
       FindSilhouetteEdges(scan_points, c.points.front(), c.points.back(), step_m);
   auto background_close_behind = [&](const std::optional<double>& step) {
@@ -260,6 +253,34 @@ bool BlendedCandidateAtCorner(const std::vector<ScanPoint>& scan_points, const C
   };
   return background_close_behind(edges.before_step_m) &&
          background_close_behind(edges.after_step_m);
+}
+
+// True when `c`, returns at a corner that the search already took as a leg (and, with its
+// tolerances, fitted into no shelf), may be the corner's leg seen blended with a background close
+// behind it, which the leg fit placed behind the leg: a leg's clean returns lie on its near faces,
+// in front of its centre, while these lie behind the corner's centre on average, and they may be
+// a blend (MayBeBlendBeforeBackground).
+bool BlendedCandidateAtCorner(const std::vector<ScanPoint>& scan_points, const Cluster& c,
+                              const Eigen::Vector2d& corner, const LegCompletionConfig& config,
+                              double step_m) {
+  return !c.points.empty() && c.centroid.norm() >= corner.norm() &&
+         MayBeBlendBeforeBackground(scan_points, c, config.blended_candidate_max_returns, step_m,
+                                    config.blended_candidate_max_step_m);
+}
+
+// True when the returns a blended view of an empty corner found, which the search took as a leg,
+// are that leg's blend and not a neighbour's leg standing behind the corner on its bearing: two
+// returns or more all within candidate_blend_max_m behind the corner, or, when they may be a
+// blend before a background close behind (MayBeBlendBeforeBackground), within
+// candidate_blend_far_max_m: less than the gap between shelves in rows (0.2 m or more) and a leg.
+bool CandidateBlendsAtCorner(const std::vector<ScanPoint>& scan_points, const Cluster& c,
+                             double corner_range, const LegCompletionConfig& config,
+                             double step_m) {
+  if (CloseBehindCorner(c, corner_range, config.candidate_blend_max_m)) return true;
+  return config.candidate_blend_far_max_m > config.candidate_blend_max_m &&
+         CloseBehindCorner(c, corner_range, config.candidate_blend_far_max_m) &&
+         MayBeBlendBeforeBackground(scan_points, c, config.blended_candidate_max_returns, step_m,
+                                    config.blended_candidate_max_step_m);
 }
 
 }  // namespace
@@ -424,8 +445,13 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                 // 253, blend_any seed0 5001 person_beside_leg 5526); at 0.08 m the second stays.
                 // Single returns too: two phantoms under blend_1p5m, round legs at 20 mm noise
                 // whose every leg was one blended return).
+                // Farther behind, up to completion.candidate_blend_far_max_m (0.15 m), when the
+                // returns may be a blend before a background close behind them (100000 scenes,
+                // seed0 60001 ... 240001: 73205 -> 73231 right first, phantoms and clutter
+                // detections unchanged; at 0.25 m 73253, but a round-legged shelf placed 6 cm off
+                // under config/lidar_variants/blend_1p5m.yaml, seed0 5001 round_noisy 5880).
                 if (!c.points.empty() && already_candidate(c) &&
-                    !CloseBehindCorner(c, corner.norm(), config.candidate_blend_max_m)) {
+                    !CandidateBlendsAtCorner(scan_points, c, corner.norm(), config, look.step_m)) {
                   ++blends_of_candidates;
                 }
                 // No blend a depth step in front of the background either: the leg's blend with a
@@ -445,9 +471,7 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                 // unchanged; two returns at most: 73199; behind the leg's near face instead of its
                 // centre: 73215 but a phantom more on seed0 40001; with the background farther
                 // behind allowed, a 1250 x 1250 phantom on a row's legs at seed0 5001).
-                if (BlendedCandidateAtCorner(scan_points, c, corner,
-                                             config.blended_candidate_max_returns, look.step_m,
-                                             config.blended_candidate_max_step_m)) {
+                if (BlendedCandidateAtCorner(scan_points, c, corner, config, look.step_m)) {
                   c.assumed_range_m = corner.norm();
                 } else {
                   c = Cluster{};

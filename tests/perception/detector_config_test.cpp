@@ -166,6 +166,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.completion.surface_offset_sigmas = -1.0; }},
     {"candidate_blend", "completion.candidate_blend_max_m",
      [](auto& c) { c.completion.candidate_blend_max_m = -0.01; }},
+    {"candidate_blend_far", "completion.candidate_blend_far_max_m",
+     [](auto& c) { c.completion.candidate_blend_far_max_m = -0.01; }},
     {"blended_candidate_returns", "completion.blended_candidate_max_returns",
      [](auto& c) { c.completion.blended_candidate_max_returns = -1; }},
     {"blended_candidate_step", "completion.blended_candidate_max_step_m",

@@ -359,6 +359,51 @@ TEST(LegCompletionTest, ACandidateCloseBehindAnEmptyCornerIsItsLegSeenBlended) {
   }
 }
 
+// The round-legged shelf's front legs as posts; back corner `behind`'s leg a post 12 cm behind
+// the corner on its bearing (a leg whose fit a blend pushed back, or a neighbour's post: beyond
+// candidate_blend_max_m, so only a blend before a background close behind it counts,
+// completion.candidate_blend_far_max_m 0.15 m); the other back corner hidden behind a 12 cm post
+// 0.4 m in front of it; a wall `wall_behind_m` behind the post. Clean returns (no beam footprint,
+// no noise), so the post is a leg candidate the search fits into no shelf.
+geometry::LaserScan FarPostScan(int behind, double wall_behind_m) {
+  const auto corners = RoundShelf().LegCentres();
+  const int hidden = behind == 1 ? 2 : 1;
+  sim::World world;
+  for (int k : {0, 3}) world.AddRoundPost(kPostsShelf * corners[k], RoundShelf().leg.Radius());
+  const Eigen::Vector2d corner = kPostsShelf * corners[behind];
+  const Eigen::Vector2d post = corner + 0.12 * corner.normalized();
+  world.AddRoundPost(post, RoundShelf().leg.Radius());
+  const Eigen::Vector2d hidden_corner = kPostsShelf * corners[hidden];
+  world.AddRoundPost(hidden_corner - 0.4 * hidden_corner.normalized(), 0.06);
+  world.AddWall({{post.x() + wall_behind_m, -3.0}, {post.x() + wall_behind_m, 3.0}});
+  sim::LidarConfig clean = WideBeam();
+  clean.enable_footprint = false;
+  return testing::SimScan(world, {}, 1, clean);
+}
+
+// With the wall 0.2 m behind the post (its returns a depth step in front of the wall, near enough
+// to blend with it) the shelf is completed on three legs, the post's by the corner's bearing,
+// within 2 cm / 20 mrad; with the far bound off, or the wall 0.6 m behind the post, it is not.
+TEST(LegCompletionTest, ACandidateFartherBehindAnEmptyCornerIsABlendOnlyBeforeACloseBackground) {
+  DetectorConfig off;
+  off.completion.candidate_blend_far_max_m = 0.0;
+  for (const int behind : {1, 2}) {
+    const auto close_wall = FarPostScan(behind, 0.2);
+    const DetectionResult r = Detector(PaperModels()).Detect(close_wall, kPostsPreset);
+    ASSERT_EQ(r.detections.size(), 1u) << "post behind corner " << behind;
+    EXPECT_GT(r.stats.completed_sets, 0);
+    const Detection& d = r.detections[0];
+    EXPECT_EQ(d.model, RoundShelf().name);
+    EXPECT_LT(geometry::Distance(d.T_lidar_shelf, kPostsShelf), 0.02) << "behind " << behind;
+    EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, kPostsShelf.yaw, RoundShelf()), 0.02);
+    EXPECT_TRUE(Detector(PaperModels(), off).Detect(close_wall, kPostsPreset).detections.empty())
+        << "behind " << behind;
+    EXPECT_TRUE(
+        Detector(PaperModels()).Detect(FarPostScan(behind, 0.6), kPostsPreset).detections.empty())
+        << "behind " << behind;
+  }
+}
+
 // Shelves pushed back against a wall, seen by a TiM571-like beam (0.87 deg spot, 0.33 deg steps,
 // 10 mm noise, no dropouts): a 1075 x 883 from 3 m, its back legs' back faces 1.5 cm in front
 // of the wall (their front faces 5.5 cm), and a round-legged 900 x 810 from 2.5 m, its back legs
