@@ -296,6 +296,41 @@ TEST(LayoutSweepTest, WhenTheMapNamesTheModelTheCloseModelsAreNeverConfused) {
   }
 }
 
+// Legs seen only blended with what stands close behind them (a wall, a rack, the next shelf's
+// side) complete a corner (completion.blended_candidate_max_returns, candidate_blend_far_max_m).
+// Over the row, aisle, occluded_leg and against_wall scenes of seeds 5001-5600, three sensors,
+// the rules turn misses into right-first shelves (measured: 1963 -> 1971 of 2027 findable) and
+// cost none: every scene right first without them stays right first, and no phantom or
+// wrong-first scene appears.
+TEST(LayoutSweepTest, LegsBlendedBeforeACloseBackgroundCompleteShelvesAndCostNone) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  perception::DetectorConfig off;
+  off.completion.blended_candidate_max_returns = 0;
+  off.completion.candidate_blend_far_max_m = 0.0;
+  int right_without = 0;
+  int right_with = 0;
+  for (const sim::LayoutClass c :
+       {sim::LayoutClass::kRow, sim::LayoutClass::kAisle, sim::LayoutClass::kOccludedLeg,
+        sim::LayoutClass::kAgainstWall}) {
+    const LayoutSweepConfig config = Scenes(c, 5001, 600);
+    const auto without = RunSweep(models, config, off);
+    const auto with = RunSweep(models, config);
+    ASSERT_EQ(with.size(), without.size());
+    for (std::size_t i = 0; i < with.size(); ++i) {
+      right_without += without[i].outcome == SceneOutcome::kRightFirst ? 1 : 0;
+      right_with += with[i].outcome == SceneOutcome::kRightFirst ? 1 : 0;
+      if (without[i].outcome == SceneOutcome::kRightFirst) {
+        EXPECT_EQ(with[i].outcome, SceneOutcome::kRightFirst) << io::LayoutFailureLine(with[i]);
+      }
+      EXPECT_LE(with[i].phantoms, without[i].phantoms) << io::LayoutFailureLine(with[i]);
+      if (with[i].outcome == SceneOutcome::kWrongFirst) {
+        EXPECT_EQ(without[i].outcome, SceneOutcome::kWrongFirst) << io::LayoutFailureLine(with[i]);
+      }
+    }
+  }
+  EXPECT_GE(right_with - right_without, 5);
+}
+
 // eval-layouts' mixed_neighbours scene 5570 (TiM571, 10 mm noise): a 1250 x 1250 shelf whose
 // near legs stand 2.8-2.9 m out and whose far legs, 4.1 m out with a wall 0.45 m behind, return
 // only blends of leg and wall (two beams each, 0.1-0.3 m behind the leg) that the search takes for
