@@ -263,7 +263,7 @@ bool MayBeBlendBeforeBackground(const std::vector<ScanPoint>& scan_points, const
 bool BlendedCandidateAtCorner(const std::vector<ScanPoint>& scan_points, const Cluster& c,
                               const Eigen::Vector2d& corner, const LegCompletionConfig& config,
                               double step_m) {
-  return !c.points.empty() && c.centroid.norm() >= corner.norm() &&
+  return c.centroid.norm() >= corner.norm() &&
          MayBeBlendBeforeBackground(scan_points, c, config.blended_candidate_max_returns, step_m,
                                     config.blended_candidate_max_step_m);
 }

@@ -333,6 +333,19 @@ TEST(LegCompletionTest, ALegCandidateBehindAnEmptyCornerIsNoBlend) {
   }
 }
 
+// One shelf returned from `scan` with the posts' preset, completed from two legs and the preset:
+// the round-legged model within 2 cm / 20 mrad of kPostsShelf (`behind`: the corner the scene
+// put a post behind, for the messages).
+void ExpectCompletedPostsShelf(const geometry::LaserScan& scan, int behind) {
+  const DetectionResult r = Detector(PaperModels()).Detect(scan, kPostsPreset);
+  ASSERT_EQ(r.detections.size(), 1u) << "post behind corner " << behind;
+  EXPECT_GT(r.stats.completed_sets, 0);
+  const Detection& d = r.detections[0];
+  EXPECT_EQ(d.model, RoundShelf().name);
+  EXPECT_LT(geometry::Distance(d.T_lidar_shelf, kPostsShelf), 0.02) << "behind " << behind;
+  EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, kPostsShelf.yaw, RoundShelf()), 0.02);
+}
+
 // Three legs in sight and, 6 cm behind the fourth corner `behind` on its bearing, a post of the
 // legs' size, which the search took as a leg candidate (and, at its own range, as no leg of this
 // shelf). No leg of a neighbour stands that close behind a corner (shelves in rows stand 0.2 m
@@ -343,13 +356,7 @@ TEST(LegCompletionTest, ACandidateCloseBehindAnEmptyCornerIsItsLegSeenBlended) {
   for (const int behind : {1, 2}) {
     const int other_back = behind == 1 ? 2 : 1;
     const auto scan = PostBehindCornerScan({0, other_back, 3}, behind, 0.06, /*square=*/false);
-    const DetectionResult r = Detector(PaperModels()).Detect(scan, kPostsPreset);
-    ASSERT_EQ(r.detections.size(), 1u) << "post behind corner " << behind;
-    EXPECT_GT(r.stats.completed_sets, 0);
-    const Detection& d = r.detections[0];
-    EXPECT_EQ(d.model, RoundShelf().name);
-    EXPECT_LT(geometry::Distance(d.T_lidar_shelf, kPostsShelf), 0.02) << "behind " << behind;
-    EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, kPostsShelf.yaw, RoundShelf()), 0.02);
+    ExpectCompletedPostsShelf(scan, behind);
     DetectorConfig off;
     off.completion.candidate_blend_max_m = 0.0;
     const DetectionResult without = Detector(PaperModels(), off).Detect(scan, kPostsPreset);
@@ -389,13 +396,7 @@ TEST(LegCompletionTest, ACandidateFartherBehindAnEmptyCornerIsABlendOnlyBeforeAC
   off.completion.candidate_blend_far_max_m = 0.0;
   for (const int behind : {1, 2}) {
     const auto close_wall = FarPostScan(behind, 0.2);
-    const DetectionResult r = Detector(PaperModels()).Detect(close_wall, kPostsPreset);
-    ASSERT_EQ(r.detections.size(), 1u) << "post behind corner " << behind;
-    EXPECT_GT(r.stats.completed_sets, 0);
-    const Detection& d = r.detections[0];
-    EXPECT_EQ(d.model, RoundShelf().name);
-    EXPECT_LT(geometry::Distance(d.T_lidar_shelf, kPostsShelf), 0.02) << "behind " << behind;
-    EXPECT_LT(SymmetricYawError(d.T_lidar_shelf.yaw, kPostsShelf.yaw, RoundShelf()), 0.02);
+    ExpectCompletedPostsShelf(close_wall, behind);
     EXPECT_TRUE(Detector(PaperModels(), off).Detect(close_wall, kPostsPreset).detections.empty())
         << "behind " << behind;
     EXPECT_TRUE(
