@@ -72,6 +72,7 @@ void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
   f.Read("max_rms_m", c.max_rms_m);
   f.Read("background_mix_share", c.background_mix_share);
   f.Read("background_mix_max_m", c.background_mix_max_m);
+  f.Read("returns_chi2_margin", c.returns_chi2_margin);
   f.RejectUnknown();
 }
 

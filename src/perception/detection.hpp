@@ -13,7 +13,8 @@ namespace shelfdock::perception {
 /// The next-best model on a detection's legs (Detection::runner_up).
 struct RunnerUp {
   std::string model;         ///< its name
-  double chi2_margin = 0.0;  ///< [-] its legs' chi-square minus the returned model's (>= 0)
+  double chi2_margin = 0.0;  ///< [-] the chi-square of its shelf fitted to the legs' returns
+                             ///< (FitShelfToReturns) minus the returned model's (>= 0)
 };
 
 /// One shelf found in a scan, in the scan's frame (`lidar`).

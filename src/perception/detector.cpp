@@ -18,6 +18,7 @@
 #include "perception/preset_gate.hpp"
 #include "perception/shelf_evidence.hpp"
 #include "perception/shelf_fit.hpp"
+#include "perception/shelf_return_fit.hpp"
 
 namespace shelfdock::perception {
 namespace {
@@ -27,7 +28,15 @@ struct Hypothesis {
   Detection detection;                          // filled when it passed every check
   HypothesisRecord record;                      // what was found out about it
   std::array<int, 4> clusters{-1, -1, -1, -1};  // leg candidates it is made of
-  double leg_chi2 = 0.0;                        // RefineShelfPose's, of its fitted legs
+  // Kept for the fits on the legs' returns (FitShelfToReturns), made only when a choice between
+  // models or the returned pose needs them.
+  LegSet set;
+  std::array<Eigen::Vector2d, 4> legs{};  // fitted leg centres
+  std::array<int, 4> corner_of_leg{-1, -1, -1, -1};
+  const geometry::ShelfModel* model = nullptr;
+  geometry::Pose2 T_legs;  // RefineShelfPose's on the fitted legs
+  double legs_chi2 = 0.0;  // its chi-square
+  std::optional<ShelfReturnFitResult> on_returns;
   int corners_present = 0;  // corners without a leg cluster where returns stand at the leg's range
   double length_m = 0.0;    // its model's leg-centre rectangle
   double width_m = 0.0;
@@ -104,6 +113,21 @@ void Count(Verdict verdict, RejectionCounts& rejected) {
   }
 }
 
+// [m^2] A surface close behind a leg (a wall a few centimetres behind a shelf pushed against
+// it) mixes into the returns whose footprint straddles the leg's outline and pulls their ranges
+// toward it by up to the gap: for the returned pose the leg's range counts as that much less
+// certain (the variance of that pull; 0 with no such surface).
+double BackgroundMixVariance(const Cluster& c, const ShelfFitConfig& config) {
+  std::optional<double> gap;
+  for (const auto& behind : {c.edges.before_step_m, c.edges.after_step_m}) {
+    if (behind && *behind > 0.0 && *behind <= config.background_mix_max_m &&
+        (!gap || *behind < *gap)) {
+      gap = behind;
+    }
+  }
+  return gap ? std::pow(config.background_mix_share * *gap, 2) : 0.0;
+}
+
 // What each fitted leg's own returns can tell (RefineShelfPose): along its beam the range noise
 // over the number of returns on it, across the beam the quantisation of one beam step
 // (step^2 / 12) over the same count; a millimetre floor either way. A far leg seen by one noisy
@@ -119,28 +143,42 @@ std::array<LegSigma, 4> LegSigmas(const std::array<Eigen::Vector2d, 4>& legs, co
     const double n = static_cast<double>(c.points.size());
     const double step = range * std::abs(in.angle_increment_rad);
     // A blended leg's range is the completed shelf's, not a measurement: only its bearing counts.
-    // A surface close behind the leg (a wall a few centimetres behind a shelf pushed against
-    // it) mixes into the returns whose footprint straddles the leg's outline and pulls their
-    // ranges toward it by up to the gap: for the returned pose the leg's range counts as that
-    // much less certain.
-    double mix2 = 0.0;
-    if (with_background) {
-      const ShelfFitConfig& sf = in.config.shelf_fit;
-      std::optional<double> gap;
-      for (const auto& behind : {c.edges.before_step_m, c.edges.after_step_m}) {
-        if (behind && *behind > 0.0 && *behind <= sf.background_mix_max_m &&
-            (!gap || *behind < *gap)) {
-          gap = behind;
-        }
-      }
-      if (gap) mix2 = std::pow(sf.background_mix_share * *gap, 2);
-    }
+    const double mix2 = with_background ? BackgroundMixVariance(c, in.config.shelf_fit) : 0.0;
     sigma[i].along_m = c.assumed_range_m
                            ? in.config.completion.max_blend_m
                            : std::sqrt(in.range_noise_m * in.range_noise_m / n + kFloor2 + mix2);
     sigma[i].across_m = std::sqrt(step * step / 12.0 / n + kFloor2);
   }
   return sigma;
+}
+
+// The legs of a set as FitShelfToReturns reads them: each leg's returns, its outline and the
+// std of one return's range (the scan's range noise, with `with_background` widened by the pull
+// of a surface close behind the leg); a blended leg by its assumed centre (LegSigmas).
+std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
+                                   const std::array<int, 4>& corner_of_leg, const ScoreInputs& in,
+                                   bool with_background) {
+  const std::array<LegSigma, 4> sigma = LegSigmas(legs, set, in, with_background);
+  std::vector<LegReturns> out;
+  for (int i = 0; i < set.count; ++i) {
+    const Cluster& c = in.pre.candidates[set.legs[i]];
+    LegReturns r;
+    r.corner = corner_of_leg[i];
+    if (c.assumed_range_m) {
+      r.centre = legs[i];
+      r.centre_sigma = sigma[i];
+    } else {
+      r.points = &c.points;
+      r.silhouette = MakeSilhouetteTerm(c.points, c.edges, in.config.leg_fit);
+      // The pull of a surface behind is one error shared by the leg's returns: spread over them
+      // as if each return had n times its variance, the leg's range is that much less certain.
+      const double n = static_cast<double>(c.points.size());
+      const double mix2 = with_background ? BackgroundMixVariance(c, in.config.shelf_fit) : 0.0;
+      r.range_sigma_m = std::sqrt(in.range_noise_m * in.range_noise_m + n * mix2);
+    }
+    out.push_back(r);
+  }
+  return out;
 }
 
 // Fits one points-model pair (3.3 leg centres, 3.4 shelf pose), screens it and weighs the
@@ -170,12 +208,12 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     rec.verdict = Verdict::kFit;
     return h;
   }
-  // The pose each leg's returns support best; its chi-square chooses among models.
+  // The pose the fitted legs support best, each weighed by its returns; every check below reads
+  // it, and its chi-square makes the confidence.
   const ShelfRefineResult refined_pose =
       RefineShelfPose(legs, set.count, model, *fit, LegSigmas(legs, set, in));
   const geometry::Pose2& T_lidar_shelf = refined_pose.T_lidar_shelf;
   rec.T_lidar_shelf = T_lidar_shelf;
-  h.leg_chi2 = refined_pose.chi2;
   // Eq. 2 again on the fitted (unbiased) leg centres: this is what tells close models apart.
   const ModelPair refined = ScoreModel(MeasureEdges(legs, set.count), model, model_index);
   rec.err_sum = refined.err_sum;
@@ -278,13 +316,21 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     return h;
   }
   rec.verdict = Verdict::kReturned;
+  h.set = set;
+  h.legs = legs;
+  h.corner_of_leg = fit->corner_of_leg;
+  h.model = &model;
+  h.T_legs = T_lidar_shelf;
+  h.legs_chi2 = refined_pose.chi2;
   Detection& d = h.detection;
   d.model = model.name;
-  // The returned pose weighs each leg by its returns and by the surface close behind it
-  // (LegSigmas); every decision above read the pose on the returns alone, so this changes where
-  // a shelf is, not which (eval-layouts --class against_wall --scenes-per-class 1000 --seed0
-  // 5001: centre / heading p95 at 10 mm 10.3 -> 8.2 mm, 8.2 -> 6.7 mrad; used in the chi-square
-  // too, it made a clutter detection of three posts before a box on seed0 5001 and 20001).
+  // The pose the competition reads (a returned shelf's is then fitted to its legs' returns):
+  // each leg weighed by its returns and by the surface close behind it (LegSigmas); every decision
+  // above read the pose on the returns alone, so this changes where a shelf is, not which
+  // (eval-layouts --class against_wall --scenes-per-class 1000
+  // --seed0 5001: centre / heading p95 at 10 mm 10.3 -> 8.2 mm, 8.2 -> 6.7 mrad; used in the
+  // chi-square too, it made a clutter detection of three posts before a box on seed0 5001 and
+  // 20001).
   d.T_lidar_shelf =
       RefineShelfPose(legs, set.count, model, *fit, LegSigmas(legs, set, in, true)).T_lidar_shelf;
   rec.T_lidar_shelf = d.T_lidar_shelf;
@@ -425,6 +471,14 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
                      T_lidar_preset,
                      config_,
                      pre.range_noise_m > 0.0 ? pre.range_noise_m : config_.leg_fit.range_sigma_m};
+  // The shelf fitted to a hypothesis' legs' returns (FitShelfToReturns), made once.
+  auto on_returns = [&](Hypothesis& h) -> const ShelfReturnFitResult& {
+    if (!h.on_returns) {
+      h.on_returns = FitShelfToReturns(SetReturns(h.legs, h.set, h.corner_of_leg, inputs, false),
+                                       *h.model, h.T_legs, config_.leg_fit);
+    }
+    return *h.on_returns;
+  };
   // Scores one leg set against every model its cluster centres pass Eq. 2 for; the returned
   // hypothesis of the best model, if any. `weighed` tells whether some hypothesis got past the
   // geometry (fit and Eq. 2) to the scan's evidence.
@@ -438,9 +492,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     const Eigen::Vector2d long_edge = edges.first_edge_long ? Eigen::Vector2d(rough[1] - rough[0])
                                                             : Eigen::Vector2d(rough[2] - rough[1]);
     const double hint = std::atan2(long_edge.y(), long_edge.x());
-    // The model of a leg set is the one its fitted legs match best (the smaller chi-square in
-    // RefineShelfPose); the evidence, which barely differs between close models, does not choose
-    // it.
+    // The model of a leg set is the one its legs match best (the smaller chi-square, below);
+    // the evidence, which barely differs between close models, does not choose it.
     std::optional<Hypothesis> best;
     for (const ModelPair& pair : pairs) {
       ++stats.hypotheses;
@@ -453,9 +506,22 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
           best = std::move(h);
           continue;
         }
-        if (h.leg_chi2 < best->leg_chi2) std::swap(h, *best);
+        // Models the legs tell apart clearly are chosen on the legs' chi-square; close ones
+        // (1075x883 and 1080x856: 5 and 27 mm apart) on the shelf fitted to the legs' returns,
+        // which holds a far leg seen by one or two returns where the other legs put it rather
+        // than where its own outline and the weak prior of the leg fit did.
+        double chi2 = h.legs_chi2;
+        double best_chi2 = best->legs_chi2;
+        if (std::abs(chi2 - best_chi2) < config_.shelf_fit.returns_chi2_margin) {
+          chi2 = on_returns(h).chi2;
+          best_chi2 = on_returns(*best).chi2;
+        }
+        if (chi2 < best_chi2) {
+          std::swap(h, *best);
+          std::swap(chi2, best_chi2);
+        }
         std::optional<RunnerUp>& runner_up = best->detection.runner_up;
-        const double margin = h.leg_chi2 - best->leg_chi2;
+        const double margin = chi2 - best_chi2;
         if (!runner_up || margin < runner_up->chi2_margin) {
           runner_up = RunnerUp{h.detection.model, margin};
         }
@@ -546,6 +612,21 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       } else if (T_lidar_preset &&
                  !NearPreset(h.detection, *T_lidar_preset, max_offset_m, max_yaw_rad)) {
         h.record.verdict = Verdict::kOffPreset;
+      }
+      if (h.record.verdict == Verdict::kReturned) {
+        // The returned pose: the shelf fitted to its legs' returns, each leg's range counted
+        // less certain by the pull of a surface close behind it (as LegSigmas does).
+        geometry::Pose2 T = on_returns(h).T_lidar_shelf;
+        const std::vector<LegReturns> with_background =
+            SetReturns(h.legs, h.set, h.corner_of_leg, inputs, true);
+        if (std::any_of(with_background.begin(), with_background.end(), [&](const LegReturns& leg) {
+              return leg.points != nullptr && leg.range_sigma_m > inputs.range_noise_m;
+            })) {
+          T = FitShelfToReturns(with_background, *h.model, T, config_.leg_fit).T_lidar_shelf;
+        }
+        T.yaw = ResolveHeading(T.yaw, h.detection.T_lidar_shelf.yaw, h.model->HeadingPeriod());
+        h.detection.T_lidar_shelf = T;
+        h.record.T_lidar_shelf = T;
       }
       Count(h.record.verdict, stats.rejected);
       if (explain) result.hypotheses.push_back(h.record);

@@ -64,6 +64,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(f.max_rms_m > 0.0, "shelf_fit.max_rms_m", "> 0");
   k.Check(f.background_mix_share >= 0.0, "shelf_fit.background_mix_share", ">= 0");
   k.Check(f.background_mix_max_m >= 0.0, "shelf_fit.background_mix_max_m", ">= 0 (0: off)");
+  k.Check(f.returns_chi2_margin >= 0.0, "shelf_fit.returns_chi2_margin", ">= 0 (0: never)");
 
   const auto& e = c.evidence;
   k.Check(e.present_margin_m > 0.0, "evidence.present_margin_m", "> 0");

@@ -106,6 +106,9 @@ struct ShelfFitConfig {
                                           ///< share of the gap to a surface close behind it less
                                           ///< certain (mixed returns pull it there) ...
   double background_mix_max_m = 0.3;      ///< [m] ... a surface at most this far behind; 0: off
+  double returns_chi2_margin = 8.0;       ///< [-] models of one leg set whose legs' chi-squares
+                                          ///< differ by less are chosen on the shelf fitted to
+                                          ///< the legs' returns (FitShelfToReturns); 0: never
 };
 
 /// What the scan says about each hypothesis (legs seen, hidden or seen through; free space

@@ -56,22 +56,11 @@ struct LegRayCost {
     return true;
   }
 
-  // The silhouette term's bearing error: of its centre (both edges seen, or neither), or of the
-  // one edge seen.
+  // The silhouette term's bearing error.
   template <typename T>
   T SilhouetteResidual(const T* c) const {
-    T lo, hi;
-    SilhouetteBearings(c, lo, hi);
-    if (edge_side < 0) return lo - T(edge_rad);
-    if (edge_side > 0) return hi - T(edge_rad);
-    return T(0.5) * (lo + hi);
-  }
-
-  // Bearings of the predicted silhouette's outline relative to the measured centre.
-  template <typename T>
-  void SilhouetteBearings(const T* c, T& lo, T& hi) const {
-    perception::SilhouetteBearings(c, round, radius, T(cos_a), T(sin_a), half_x, half_y, mid_cos,
-                                   mid_sin, lo, hi);
+    return SilhouetteBearingError(c, round, radius, T(cos_a), T(sin_a), half_x, half_y, mid_cos,
+                                  mid_sin, edge_side, edge_rad);
   }
 };
 
@@ -96,6 +85,59 @@ PcaDirection PrincipalDirection(const std::vector<ScanPoint>& points) {
   out.yaw = std::atan2(main.y(), main.x());
   out.anisotropy = eig.eigenvalues()(1) / std::max(eig.eigenvalues()(0), 1e-12);
   return out;
+}
+
+SilhouetteTerm MakeSilhouetteTerm(const std::vector<ScanPoint>& points,
+                                  const SilhouetteEdges& edges, const LegFitConfig& config) {
+  if (points.empty()) return {};
+  // The silhouette: the leg spans the beams from the first point to the last, each edge lying
+  // within one beam step; its centre bearing is the mean of the outer beams' bearings. That
+  // holds however wide the beam footprint makes the silhouette (it widens both edges alike),
+  // and it does not depend on the range noise. A deviation from the paper, which fits the
+  // points alone: with range noise comparable to the leg's size, the curvature of the predicted
+  // ranges turns that noise into error across the beam (0.7 beam steps RMS for a 26 mm leg at
+  // 1 m, against 0.2 with this term; LegFitTest).
+  const ScanPoint& first = points.front();
+  const ScanPoint& last = points.back();
+  const double span = geometry::AngleDiff(last.angle, first.angle);
+  const double mid = first.angle + 0.5 * span;
+  // The beam step: from the outer beams, or for a single return from the edge seen beside it
+  // (halfway to the next beam). A single return with no edge seen has no silhouette term.
+  const std::optional<double> seen_edge = edges.before_rad ? edges.before_rad : edges.after_rad;
+  double step = 0.0;
+  if (last.beam != first.beam) {
+    step = std::abs(span / (last.beam - first.beam));
+  } else if (seen_edge) {
+    step = 2.0 * std::abs(geometry::AngleDiff(*seen_edge, first.angle));
+  }
+  SilhouetteTerm term;
+  term.mid_rad = mid;
+  if (step > 0.0) {
+    term.sigma_rad = config.silhouette_sigma_beams * step;
+    // One edge seen and the other side open (the beam beyond returned nothing, or something
+    // nearer, or the field of view ends): the outer point there need not be the leg's last, so
+    // the centre between the outer beams would pull the leg toward the edge seen. The edge seen
+    // and the leg's known section place it instead; one edge is known half as well as the mean
+    // of two. For a leg seen by a few beams whatever left the side open; with more, only when the
+    // side is cut (an occluder, the end of the field of view: the leg may go on for centimetres
+    // there). Behind a dropout a leg goes on for a beam or so, its faces place it well, and the
+    // one edge, which leans on the section's modelled orientation and the beam's footprint, did
+    // worse (docking in warehouse_aisle.yaml, 200 runs: heading p99 before the code check 4.4
+    // mrad with the outer beams for 6 or more returns, 5.1 with the edge for any number;
+    // eval-layouts 9000 scenes 96.80 against 96.89 %). The sensor beside or under a large shelf
+    // sees the nearest leg cut by the field of view's end with 8-13 returns, and the outer beams
+    // put it 15-24 mm off across the beam (eval-layouts --class large_close --scenes-per-class
+    // 1000 --seed0 5001: 99.07 -> 99.73 % with the edge).
+    const bool one_edge = edges.before_rad.has_value() != edges.after_rad.has_value();
+    const bool other_side_cut = edges.before_rad ? edges.after_cut : edges.before_cut;
+    if (one_edge &&
+        (static_cast<int>(points.size()) <= config.one_edge_max_points || other_side_cut)) {
+      term.edge_rad = geometry::AngleDiff(*seen_edge, mid);
+      term.edge_side = term.edge_rad < 0.0 ? -1 : 1;
+      term.sigma_rad *= std::sqrt(2.0);
+    }
+  }
+  return term;
 }
 
 LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegModel& leg,
@@ -127,54 +169,9 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
       centroid.norm() > 1e-9 ? centroid.normalized() : Eigen::Vector2d::UnitX();
   const Eigen::Vector2d c0 = centroid + depth * view;
 
-  // The silhouette: the leg spans the beams from the first point to the last, each edge lying
-  // within one beam step; its centre bearing is the mean of the outer beams' bearings. That
-  // holds however wide the beam footprint makes the silhouette (it widens both edges alike),
-  // and it does not depend on the range noise. A deviation from the paper, which fits the
-  // points alone: with range noise comparable to the leg's size, the curvature of the predicted
-  // ranges turns that noise into error across the beam (0.7 beam steps RMS for a 26 mm leg at
-  // 1 m, against 0.2 with this term; LegFitTest).
-  const ScanPoint& first = points.front();
-  const ScanPoint& last = points.back();
-  const double span = geometry::AngleDiff(last.angle, first.angle);
-  const double mid = first.angle + 0.5 * span;
-  // The beam step: from the outer beams, or for a single return from the edge seen beside it
-  // (halfway to the next beam). A single return with no edge seen has no silhouette term.
-  const std::optional<double> seen_edge = edges.before_rad ? edges.before_rad : edges.after_rad;
-  double step = 0.0;
-  if (last.beam != first.beam) {
-    step = std::abs(span / (last.beam - first.beam));
-  } else if (seen_edge) {
-    step = 2.0 * std::abs(geometry::AngleDiff(*seen_edge, first.angle));
-  }
-  double silhouette_weight = 0.0;
-  int edge_side = 0;
-  double edge_rad = 0.0;
-  if (step > 0.0) {
-    silhouette_weight = config.range_sigma_m / (config.silhouette_sigma_beams * step);
-    // One edge seen and the other side open (the beam beyond returned nothing, or something
-    // nearer, or the field of view ends): the outer point there need not be the leg's last, so
-    // the centre between the outer beams would pull the leg toward the edge seen. The edge seen
-    // and the leg's known section place it instead; one edge is known half as well as the mean
-    // of two. For a leg seen by a few beams whatever left the side open; with more, only when the
-    // side is cut (an occluder, the end of the field of view: the leg may go on for centimetres
-    // there). Behind a dropout a leg goes on for a beam or so, its faces place it well, and the
-    // one edge, which leans on the section's modelled orientation and the beam's footprint, did
-    // worse (docking in warehouse_aisle.yaml, 200 runs: heading p99 before the code check 4.4
-    // mrad with the outer beams for 6 or more returns, 5.1 with the edge for any number;
-    // eval-layouts 9000 scenes 96.80 against 96.89 %). The sensor beside or under a large shelf
-    // sees the nearest leg cut by the field of view's end with 8-13 returns, and the outer beams
-    // put it 15-24 mm off across the beam (eval-layouts --class large_close --scenes-per-class
-    // 1000 --seed0 5001: 99.07 -> 99.73 % with the edge).
-    const bool one_edge = edges.before_rad.has_value() != edges.after_rad.has_value();
-    const bool other_side_cut = edges.before_rad ? edges.after_cut : edges.before_cut;
-    if (one_edge &&
-        (static_cast<int>(points.size()) <= config.one_edge_max_points || other_side_cut)) {
-      edge_rad = geometry::AngleDiff(*seen_edge, mid);
-      edge_side = edge_rad < 0.0 ? -1 : 1;
-      silhouette_weight /= std::sqrt(2.0);
-    }
-  }
+  const SilhouetteTerm silhouette = MakeSilhouetteTerm(points, edges, config);
+  const double silhouette_weight =
+      silhouette.sigma_rad > 0.0 ? config.range_sigma_m / silhouette.sigma_rad : 0.0;
 
   // Robust loss by iteratively reweighted least squares (Huber weights w = min(1, k / |r|)),
   // with Ceres' TinySolver (dense LM on 2 parameters) per round: far less overhead than
@@ -190,11 +187,11 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
                   0.5 * leg.width_m,
                   c0,
                   config.prior_weight,
-                  std::cos(mid),
-                  std::sin(mid),
+                  std::cos(silhouette.mid_rad),
+                  std::sin(silhouette.mid_rad),
                   silhouette_weight,
-                  edge_side,
-                  edge_rad};
+                  silhouette.edge_side,
+                  silhouette.edge_rad};
   using AutoDiff = ceres::TinySolverAutoDiffFunction<LegRayCost, Eigen::Dynamic, 2>;
   const AutoDiff function(cost);
   ceres::TinySolver<AutoDiff> solver;

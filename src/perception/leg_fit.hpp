@@ -29,6 +29,21 @@ struct PcaDirection {
 /// Principal axis of the points (PCA) and how elongated they are.
 PcaDirection PrincipalDirection(const std::vector<ScanPoint>& points);
 
+/// What a leg's outline across the beams says about its bearing (the fits' silhouette term): the
+/// bearing of its centre (between the outer beams) or, when one edge is seen and the other side
+/// may go on, of that edge; with its std.
+struct SilhouetteTerm {
+  double mid_rad = 0.0;    ///< [rad] bearing of the outline's centre, between the outer beams
+  double sigma_rad = 0.0;  ///< [rad] std of the bearing the term holds; 0: no term (one return,
+                           ///< no edge seen)
+  int edge_side = 0;       ///< one edge holds: -1 the smaller bearing, +1 the larger; 0 the centre
+  double edge_rad = 0.0;   ///< [rad] that edge's bearing relative to mid_rad
+};
+/// The silhouette term of a leg's returns (beam order) and its outline's edges (FitLeg explains
+/// when one edge holds instead of the centre).
+SilhouetteTerm MakeSilhouetteTerm(const std::vector<ScanPoint>& points,
+                                  const SilhouetteEdges& edges, const LegFitConfig& config);
+
 /// Paper 3.3: the leg centre from its points by nonlinear least squares (Ceres). Round legs use
 /// the residual |p - c| - r; rectangular legs the distance of each point to the nearest face of
 /// the G_h x G_w section that faces the sensor (at the origin). The section's axes come from

@@ -41,4 +41,19 @@ void SilhouetteBearings(const T* c, bool round, double radius, const T& cos_a, c
   }
 }
 
+/// The silhouette term's bearing error (leg fit, shelf fit on the returns): of the predicted
+/// outline's centre relative to (mid_cos, mid_sin) when edge_side is 0 (both edges seen, or
+/// neither), else of the outline's edge on that side (-1 the smaller bearing) relative to the
+/// edge seen at edge_rad.
+template <typename T>
+T SilhouetteBearingError(const T* c, bool round, double radius, const T& cos_a, const T& sin_a,
+                         double half_x, double half_y, double mid_cos, double mid_sin,
+                         int edge_side, double edge_rad) {
+  T lo, hi;
+  SilhouetteBearings(c, round, radius, cos_a, sin_a, half_x, half_y, mid_cos, mid_sin, lo, hi);
+  if (edge_side < 0) return lo - T(edge_rad);
+  if (edge_side > 0) return hi - T(edge_rad);
+  return T(0.5) * (lo + hi);
+}
+
 }  // namespace shelfdock::perception

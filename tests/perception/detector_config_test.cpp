@@ -99,6 +99,8 @@ const RuleCase kCases[] = {
     {"shelf_fit_min_sigma", "shelf_fit.min_leg_sigma_m",
      [](auto& c) { c.shelf_fit.min_leg_sigma_m = 0.0; }},
     {"shelf_fit_max_rms", "shelf_fit.max_rms_m", [](auto& c) { c.shelf_fit.max_rms_m = 0.0; }},
+    {"shelf_fit_returns_chi2_margin", "shelf_fit.returns_chi2_margin",
+     [](auto& c) { c.shelf_fit.returns_chi2_margin = -1.0; }},
     {"present_margin", "evidence.present_margin_m",
      [](auto& c) { c.evidence.present_margin_m = 0.0; }},
     {"through_margin", "evidence.through_margin_m",
