@@ -1,6 +1,7 @@
 #include "perception/shelf_return_fit.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <ceres/tiny_solver.h>
 #include <ceres/tiny_solver_autodiff_function.h>
@@ -86,6 +87,14 @@ double HuberSqrtWeight(double abs_residual, double k) {
 ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
                                        const geometry::ShelfModel& model,
                                        const geometry::Pose2& T_init, const LegFitConfig& config) {
+  ShelfReturnFitResult out;
+  out.T_lidar_shelf = T_init;
+  for (const LegReturns& leg : legs) {
+    if (leg.corner < 0 || leg.corner > 3) {  // no corner to place the leg at: no fit
+      out.chi2 = std::numeric_limits<double>::infinity();
+      return out;
+    }
+  }
   std::vector<std::vector<double>> weights(legs.size());
   std::vector<double> silhouette_weights(legs.size(), 1.0);
   std::vector<Eigen::Vector2d> mid_directions(legs.size());
@@ -160,7 +169,6 @@ ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
       }
     }
   }
-  ShelfReturnFitResult out;
   out.T_lidar_shelf = geometry::Pose2(x(0), x(1), geometry::WrapAngle(x(2)));
   Eigen::VectorXd r(n);
   function(x.data(), r.data(), nullptr);

@@ -42,7 +42,8 @@ struct ShelfReturnFitResult {
 /// its face (where on the section those returns hit is not known), which the leg's range then
 /// follows; here the other legs fix it. Huber weights by iteratively reweighted least squares
 /// (LegFitConfig::loss_scale_m), Ceres' TinySolver from `T_init`. The chi-square compares the
-/// models of one leg set on the same returns.
+/// models of one leg set on the same returns. A leg whose corner is not 0-3: `T_init` and an
+/// infinite chi-square.
 ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
                                        const geometry::ShelfModel& model,
                                        const geometry::Pose2& T_init, const LegFitConfig& config);

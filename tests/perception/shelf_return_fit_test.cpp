@@ -147,5 +147,28 @@ TEST(ShelfReturnFitTest, FarLegsSeenByFewReturnsAreHeldWhereTheOtherLegsPutThem)
   EXPECT_LT(yaw2_returns, yaw2_legs);
 }
 
+// A leg given no model corner (corner -1, the default) cannot be placed: the fit returns the
+// pose it was given and an infinite chi-square, which loses every comparison.
+TEST(ShelfReturnFitTest, ALegWithoutACornerIsNoFit) {
+  const auto model = testing::PaperModels()[1];
+  const geometry::Pose2 truth = testing::PlaceShelf(model, 2.0, 0.1, 0.4);
+  const ShelfScan s = ScanShelf(model, truth, 7);
+  ASSERT_GE(s.count, 3);
+  const auto legs_fit = FitLegCentres(s, model);
+  ASSERT_TRUE(legs_fit.has_value());
+  std::vector<LegReturns> legs = Returns(s, legs_fit->first);
+  const ShelfReturnFitResult good =
+      FitShelfToReturns(legs, model, legs_fit->second.T_lidar_shelf, LegFitConfig{});
+  EXPECT_TRUE(std::isfinite(good.chi2));
+  EXPECT_LT(geometry::Distance(good.T_lidar_shelf, truth), 0.03);
+  legs[1].corner = -1;
+  const geometry::Pose2 start(1.0, 2.0, 0.3);
+  const ShelfReturnFitResult bad = FitShelfToReturns(legs, model, start, LegFitConfig{});
+  EXPECT_TRUE(std::isinf(bad.chi2));
+  EXPECT_EQ(bad.T_lidar_shelf.x, start.x);
+  EXPECT_EQ(bad.T_lidar_shelf.y, start.y);
+  EXPECT_EQ(bad.T_lidar_shelf.yaw, start.yaw);
+}
+
 }  // namespace
 }  // namespace shelfdock::perception
