@@ -30,8 +30,8 @@ struct Detection {
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< of (x, y, yaw) [m^2, rad^2], of
                                                          ///< T_lidar_shelf_fit
   /// The robust shelf fit's pose (3.4), the one `covariance` describes; T_lidar_shelf refines it
-  /// by each leg's own returns. nullopt: T_lidar_shelf is the fit's pose (a detection built
-  /// elsewhere, e.g. in tests).
+  /// on the legs' returns (FitShelfToReturns). nullopt: T_lidar_shelf is the fit's pose (a
+  /// detection built elsewhere, e.g. in tests).
   std::optional<geometry::Pose2> T_lidar_shelf_fit;
   /// [0, 1] how strongly the scan supports this shelf (legs seen, hidden or unobserved, fit
   /// error, free space inside the footprint, leg sizes); see perception::ShelfConfidence.
