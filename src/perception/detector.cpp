@@ -27,19 +27,16 @@ namespace {
 struct Hypothesis {
   Detection detection;                          // filled when it passed every check
   HypothesisRecord record;                      // what was found out about it
-  std::array<int, 4> clusters{-1, -1, -1, -1};  // leg candidates it is made of
+  LegSet set;                                   // leg candidates it is made of
+  const geometry::ShelfModel* model = nullptr;  // the model it was scored against
   // Kept for the fits on the legs' returns (FitShelfToReturns), made only when a choice between
   // models or the returned pose needs them.
-  LegSet set;
   std::array<Eigen::Vector2d, 4> legs{};  // fitted leg centres
   std::array<int, 4> corner_of_leg{-1, -1, -1, -1};
-  const geometry::ShelfModel* model = nullptr;
   geometry::Pose2 T_legs;  // RefineShelfPose's on the fitted legs
   double legs_chi2 = 0.0;  // its chi-square
   std::optional<ShelfReturnFitResult> on_returns;
   int corners_present = 0;  // corners without a leg cluster where returns stand at the leg's range
-  double length_m = 0.0;    // its model's leg-centre rectangle
-  double width_m = 0.0;
 };
 
 // Leg fits depend only on the cluster and the leg section, so they are shared between the
@@ -188,9 +185,8 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
                  const ScoreInputs& in, LegFitCache& cache) {
   const DetectorConfig& config = in.config;
   Hypothesis h;
-  h.clusters = set.legs;
-  h.length_m = model.length_m;
-  h.width_m = model.width_m;
+  h.set = set;
+  h.model = &model;
   HypothesisRecord& rec = h.record;
   rec.model = model.name;
   std::array<Eigen::Vector2d, 4> legs{};
@@ -316,10 +312,8 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     return h;
   }
   rec.verdict = Verdict::kReturned;
-  h.set = set;
   h.legs = legs;
   h.corner_of_leg = fit->corner_of_leg;
-  h.model = &model;
   h.T_legs = T_lidar_shelf;
   h.legs_chi2 = refined_pose.chi2;
   Detection& d = h.detection;
@@ -590,10 +584,11 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     std::vector<double> weights;
     std::vector<OrientedRect> footprints;
     for (const Hypothesis& h : hypotheses) {
-      legs.push_back(h.clusters);
+      legs.push_back(h.set.legs);
       weights.push_back(4.0 * h.detection.confidence);
       const double m = config_.evidence.overlap_margin_m;
-      footprints.push_back({h.detection.T_lidar_shelf, 0.5 * h.length_m - m, 0.5 * h.width_m - m});
+      footprints.push_back(
+          {h.detection.T_lidar_shelf, 0.5 * h.model->length_m - m, 0.5 * h.model->width_m - m});
     }
     std::vector<std::vector<char>> overlap(hypotheses.size(),
                                            std::vector<char>(hypotheses.size(), 0));

@@ -36,14 +36,8 @@ struct LegRayCost {
   bool operator()(const T* c, T* residual) const {
     const auto n = points->size();
     for (std::size_t i = 0; i < n; ++i) {
-      const ScanPoint& q = (*points)[i];
-      const double ux = q.p.x() / q.range, uy = q.p.y() / q.range;  // beam direction
       T* r = residual + 2 * i;
-      if (round) {
-        CircleRayResidual(c, ux, uy, q.range, radius, r);
-      } else {
-        BoxRayResidual(c, ux, uy, q.range, T(cos_a), T(sin_a), half_x, half_y, r);
-      }
+      ReturnResidual(c, (*points)[i], r);
       r[0] *= T(weights[i]);
       r[1] *= T(weights[i]);
     }
@@ -56,6 +50,12 @@ struct LegRayCost {
     return true;
   }
 
+  // Return q's residuals (range, miss distance) against the section centred at c.
+  template <typename T>
+  void ReturnResidual(const T* c, const ScanPoint& q, T* r) const {
+    ReturnRayResidual(c, q, round, radius, T(cos_a), T(sin_a), half_x, half_y, r);
+  }
+
   // The silhouette term's bearing error.
   template <typename T>
   T SilhouetteResidual(const T* c) const {
@@ -63,11 +63,6 @@ struct LegRayCost {
                                   mid_sin, edge_side, edge_rad);
   }
 };
-
-// sqrt of the Huber weight min(1, k / |r|): scales a residual for the next IRLS round.
-double HuberSqrtWeight(double abs_residual, double k) {
-  return abs_residual <= k ? 1.0 : std::sqrt(k / abs_residual);
-}
 
 }  // namespace
 
@@ -205,13 +200,7 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
     if (round_i + 1 == kIrlsRounds || !ok) break;
     for (std::size_t i = 0; i < points.size(); ++i) {
       double r[2];
-      const ScanPoint& q = points[i];
-      if (round) {
-        CircleRayResidual(c.data(), q.p.x() / q.range, q.p.y() / q.range, q.range, leg.Radius(), r);
-      } else {
-        BoxRayResidual<double>(c.data(), q.p.x() / q.range, q.p.y() / q.range, q.range, cost.cos_a,
-                               cost.sin_a, cost.half_x, cost.half_y, r);
-      }
+      cost.ReturnResidual(c.data(), points[i], r);
       weights[i] = HuberSqrtWeight(std::hypot(r[0], r[1]), config.loss_scale_m);
     }
     // A missed edge beam (dropout, a trailing point removed) or a leg partly hidden behind
@@ -226,12 +215,7 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
   double sum_sq = 0.0;
   for (const auto& q : points) {
     double r[2];
-    if (round) {
-      CircleRayResidual(c.data(), q.p.x() / q.range, q.p.y() / q.range, q.range, leg.Radius(), r);
-    } else {
-      BoxRayResidual<double>(c.data(), q.p.x() / q.range, q.p.y() / q.range, q.range, cost.cos_a,
-                             cost.sin_a, cost.half_x, cost.half_y, r);
-    }
+    cost.ReturnResidual(c.data(), q, r);
     sum_sq += r[0] * r[0] + r[1] * r[1];
   }
   out.rms_m = std::sqrt(sum_sq / static_cast<double>(points.size()));

@@ -7,6 +7,8 @@
 
 #include <ceres/jet.h>
 
+#include "perception/scan_point.hpp"
+
 namespace shelfdock::perception {
 
 // Residuals of one beam against a leg section, by ray casting from the sensor (the origin):
@@ -54,6 +56,25 @@ void BoxRayResidual(const T* c, double ux, double uy, double range, const T& cos
   }
   out[0] = T(range) - t_in;
   out[1] = t_in > t_out ? t_in - t_out : T(0);
+}
+
+/// Return q's residuals (CircleRayResidual or BoxRayResidual) against a leg section centred at
+/// `c`: round of `radius`, or a half_x x half_y box with its x axis at (cos_a, sin_a).
+template <typename T>
+void ReturnRayResidual(const T* c, const ScanPoint& q, bool round, double radius, const T& cos_a,
+                       const T& sin_a, double half_x, double half_y, T* out) {
+  const double ux = q.p.x() / q.range, uy = q.p.y() / q.range;  // beam direction
+  if (round) {
+    CircleRayResidual(c, ux, uy, q.range, radius, out);
+  } else {
+    BoxRayResidual(c, ux, uy, q.range, cos_a, sin_a, half_x, half_y, out);
+  }
+}
+
+/// sqrt of the Huber weight min(1, k / |r|): scales a residual for the next round of the fits'
+/// iteratively reweighted least squares.
+inline double HuberSqrtWeight(double abs_residual, double k) {
+  return abs_residual <= k ? 1.0 : std::sqrt(k / abs_residual);
 }
 
 }  // namespace shelfdock::perception

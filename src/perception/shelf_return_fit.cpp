@@ -27,6 +27,30 @@ struct ShelfReturnCost {
 
   int NumResiduals() const { return n_residuals; }
 
+  // Where leg l's section is centred under the pose x, whose heading has cosine c and sine s.
+  template <typename T>
+  void LegCentre(const T* x, const T& c, const T& s, std::size_t l, T* centre) const {
+    const Eigen::Vector2d& u = corners[static_cast<std::size_t>((*legs)[l].corner)];
+    centre[0] = x[0] + c * T(u.x()) - s * T(u.y());
+    centre[1] = x[1] + s * T(u.x()) + c * T(u.y());
+  }
+
+  // Return q's residuals (range, miss distance) in metres against a section at `centre`, turned
+  // with the shelf.
+  template <typename T>
+  void ReturnResidual(const T* centre, const T& c, const T& s, const ScanPoint& q, T* r) const {
+    ReturnRayResidual(centre, q, round, radius, c, s, half_x, half_y, r);
+  }
+
+  // Leg l's outline bearing error [rad] (its silhouette term, unweighted).
+  template <typename T>
+  T OutlineError(const T* centre, const T& c, const T& s, std::size_t l) const {
+    const SilhouetteTerm& sil = (*legs)[l].silhouette;
+    const Eigen::Vector2d& mid = (*mid_directions)[l];
+    return SilhouetteBearingError(centre, round, radius, c, s, half_x, half_y, mid.x(), mid.y(),
+                                  sil.edge_side, sil.edge_rad);
+  }
+
   template <typename T>
   bool operator()(const T* x, T* residual) const {
     using std::cos;
@@ -36,8 +60,8 @@ struct ShelfReturnCost {
     int k = 0;
     for (std::size_t l = 0; l < legs->size(); ++l) {
       const LegReturns& leg = (*legs)[l];
-      const Eigen::Vector2d& u = corners[static_cast<std::size_t>(leg.corner)];
-      const T centre[2] = {x[0] + c * T(u.x()) - s * T(u.y()), x[1] + s * T(u.x()) + c * T(u.y())};
+      T centre[2];
+      LegCentre(x, c, s, l, centre);
       if (leg.points == nullptr) {
         const double norm = leg.centre.norm();
         const Eigen::Vector2d along =
@@ -51,36 +75,20 @@ struct ShelfReturnCost {
       const std::vector<double>& w = (*weights)[l];
       const double inv_sigma = 1.0 / leg.range_sigma_m;
       for (std::size_t i = 0; i < leg.points->size(); ++i) {
-        const ScanPoint& q = (*leg.points)[i];
-        const double ux = q.p.x() / q.range, uy = q.p.y() / q.range;
         T* r = residual + k;
-        if (round) {
-          CircleRayResidual(centre, ux, uy, q.range, radius, r);
-        } else {
-          BoxRayResidual(centre, ux, uy, q.range, c, s, half_x, half_y, r);
-        }
+        ReturnResidual(centre, c, s, (*leg.points)[i], r);
         r[0] *= T(w[i] * inv_sigma);
         r[1] *= T(w[i] * inv_sigma);
         k += 2;
       }
       const SilhouetteTerm& sil = leg.silhouette;
-      if (sil.sigma_rad > 0.0) {
-        const Eigen::Vector2d& mid = (*mid_directions)[l];
-        residual[k] = T((*silhouette_weights)[l] / sil.sigma_rad) *
-                      SilhouetteBearingError(centre, round, radius, c, s, half_x, half_y, mid.x(),
-                                             mid.y(), sil.edge_side, sil.edge_rad);
-      } else {
-        residual[k] = T(0);
-      }
-      ++k;
+      residual[k++] = sil.sigma_rad > 0.0 ? T((*silhouette_weights)[l] / sil.sigma_rad) *
+                                                OutlineError(centre, c, s, l)
+                                          : T(0);
     }
     return true;
   }
 };
-
-double HuberSqrtWeight(double abs_residual, double k) {
-  return abs_residual <= k ? 1.0 : std::sqrt(k / abs_residual);
-}
 
 }  // namespace
 
@@ -109,14 +117,13 @@ ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
     weights[l].assign(legs[l].points->size(), 1.0);
     n += 2 * static_cast<int>(legs[l].points->size()) + 1;
   }
-  const bool round = model.leg.shape == geometry::LegShape::kCircle;
   const auto corners = model.LegCentres();
   ShelfReturnCost cost{&legs,
                        &weights,
                        &silhouette_weights,
                        &mid_directions,
                        {corners[0], corners[1], corners[2], corners[3]},
-                       round,
+                       model.leg.shape == geometry::LegShape::kCircle,
                        model.leg.Radius(),
                        0.5 * model.leg.length_m,
                        0.5 * model.leg.width_m,
@@ -144,25 +151,16 @@ ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
     for (std::size_t l = 0; l < legs.size(); ++l) {
       const LegReturns& leg = legs[l];
       if (leg.points == nullptr) continue;
-      const Eigen::Vector2d& u = corners[static_cast<std::size_t>(leg.corner)];
-      const double centre[2] = {x(0) + c * u.x() - s * u.y(), x(1) + s * u.x() + c * u.y()};
+      double centre[2];
+      cost.LegCentre(x.data(), c, s, l, centre);
       for (std::size_t i = 0; i < leg.points->size(); ++i) {
-        const ScanPoint& q = (*leg.points)[i];
         double r[2];
-        if (round) {
-          CircleRayResidual(centre, q.p.x() / q.range, q.p.y() / q.range, q.range,
-                            model.leg.Radius(), r);
-        } else {
-          BoxRayResidual<double>(centre, q.p.x() / q.range, q.p.y() / q.range, q.range, c, s,
-                                 cost.half_x, cost.half_y, r);
-        }
+        cost.ReturnResidual(centre, c, s, (*leg.points)[i], r);
         weights[l][i] = HuberSqrtWeight(std::hypot(r[0], r[1]), config.loss_scale_m);
       }
       const SilhouetteTerm& sil = leg.silhouette;
       if (sil.sigma_rad > 0.0) {
-        const double e = SilhouetteBearingError(centre, round, model.leg.Radius(), c, s,
-                                                cost.half_x, cost.half_y, mid_directions[l].x(),
-                                                mid_directions[l].y(), sil.edge_side, sil.edge_rad);
+        const double e = cost.OutlineError(centre, c, s, l);
         // As FitLeg: the Huber scale in metres, the bearing error weighed as a range.
         silhouette_weights[l] = HuberSqrtWeight(std::abs(config.range_sigma_m * e / sil.sigma_rad),
                                                 config.loss_scale_m);
