@@ -150,12 +150,10 @@ std::array<LegSigma, 4> LegSigmas(const std::array<Eigen::Vector2d, 4>& legs, co
 }
 
 // The legs of a set as FitShelfToReturns reads them: each leg's returns, its outline and the
-// std of one return's range (the scan's range noise, with `with_background` widened by the pull
-// of a surface close behind the leg); a blended leg by its assumed centre (LegSigmas).
+// scan's range noise; a blended leg by its assumed centre (LegSigmas).
 std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
-                                   const std::array<int, 4>& corner_of_leg, const ScoreInputs& in,
-                                   bool with_background) {
-  const std::array<LegSigma, 4> sigma = LegSigmas(legs, set, in, with_background);
+                                   const std::array<int, 4>& corner_of_leg, const ScoreInputs& in) {
+  const std::array<LegSigma, 4> sigma = LegSigmas(legs, set, in);
   std::vector<LegReturns> out;
   for (int i = 0; i < set.count; ++i) {
     const Cluster& c = in.pre.candidates[set.legs[i]];
@@ -167,15 +165,33 @@ std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs, c
     } else {
       r.points = &c.points;
       r.silhouette = MakeSilhouetteTerm(c.points, c.edges, in.config.leg_fit);
-      // The pull of a surface behind is one error shared by the leg's returns: spread over them
-      // as if each return had n times its variance, the leg's range is that much less certain.
-      const double n = static_cast<double>(c.points.size());
-      const double mix2 = with_background ? BackgroundMixVariance(c, in.config.shelf_fit) : 0.0;
-      r.range_sigma_m = std::sqrt(in.range_noise_m * in.range_noise_m + n * mix2);
+      r.range_sigma_m = in.range_noise_m;
     }
     out.push_back(r);
   }
   return out;
+}
+
+// Widens the range noise of each leg of `returns` (SetReturns of `set`) with a surface close
+// behind it by that surface's pull (BackgroundMixVariance), as LegSigmas does for
+// RefineShelfPose: the pull is one error shared by the leg's returns, so spread over them as if
+// each had n times its variance. False when no leg has such a surface.
+bool WidenForBackground(std::vector<LegReturns>& returns, const LegSet& set,
+                        const ScoreInputs& in) {
+  bool widened = false;
+  for (int i = 0; i < set.count; ++i) {
+    LegReturns& r = returns[static_cast<std::size_t>(i)];
+    if (r.points == nullptr) continue;
+    const Cluster& c = in.pre.candidates[set.legs[i]];
+    const double n = static_cast<double>(c.points.size());
+    const double mix2 = BackgroundMixVariance(c, in.config.shelf_fit);
+    const double sigma = std::sqrt(in.range_noise_m * in.range_noise_m + n * mix2);
+    if (sigma > r.range_sigma_m) {
+      r.range_sigma_m = sigma;
+      widened = true;
+    }
+  }
+  return widened;
 }
 
 // Fits one points-model pair (3.3 leg centres, 3.4 shelf pose), screens it and weighs the
@@ -468,8 +484,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   // The shelf fitted to a hypothesis' legs' returns (FitShelfToReturns), made once.
   auto on_returns = [&](Hypothesis& h) -> const ShelfReturnFitResult& {
     if (!h.on_returns) {
-      h.on_returns = FitShelfToReturns(SetReturns(h.legs, h.set, h.corner_of_leg, inputs, false),
-                                       *h.model, h.T_legs, config_.leg_fit);
+      h.on_returns = FitShelfToReturns(SetReturns(h.legs, h.set, h.corner_of_leg, inputs), *h.model,
+                                       h.T_legs, config_.leg_fit);
     }
     return *h.on_returns;
   };
@@ -612,12 +628,9 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
         // The returned pose: the shelf fitted to its legs' returns, each leg's range counted
         // less certain by the pull of a surface close behind it (as LegSigmas does).
         geometry::Pose2 T = on_returns(h).T_lidar_shelf;
-        const std::vector<LegReturns> with_background =
-            SetReturns(h.legs, h.set, h.corner_of_leg, inputs, true);
-        if (std::any_of(with_background.begin(), with_background.end(), [&](const LegReturns& leg) {
-              return leg.points != nullptr && leg.range_sigma_m > inputs.range_noise_m;
-            })) {
-          T = FitShelfToReturns(with_background, *h.model, T, config_.leg_fit).T_lidar_shelf;
+        std::vector<LegReturns> returns = SetReturns(h.legs, h.set, h.corner_of_leg, inputs);
+        if (WidenForBackground(returns, h.set, inputs)) {
+          T = FitShelfToReturns(returns, *h.model, T, config_.leg_fit).T_lidar_shelf;
         }
         T.yaw = ResolveHeading(T.yaw, h.detection.T_lidar_shelf.yaw, h.model->HeadingPeriod());
         h.detection.T_lidar_shelf = T;
