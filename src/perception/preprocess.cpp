@@ -1,6 +1,7 @@
 #include "perception/preprocess.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "perception/depth_step.hpp"
@@ -112,6 +113,15 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad
                          const PreprocessConfig& config) {
   if (pts.size() < 2) return 0;
   const double alpha = std::abs(angle_increment_rad);
+  // Eq. 1's test beta < beta_min without its atan: beta is the angle of (x, y) = (|OF| - |ON|
+  // cos(alpha), |ON| sin(alpha)), y > 0, and for 0 < beta_min <= pi that angle is below beta_min
+  // exactly when x sin(beta_min) - y cos(beta_min) > 0 (an atan2 and a sincos per depth jump
+  // were a tenth of a one-shelf detection). Neighbours are one or two beams apart.
+  const double min_angle = config.trailing_min_angle_rad;
+  const double sin_min = std::sin(min_angle);
+  const double cos_min = std::cos(min_angle);
+  const std::array<double, 3> sin_alpha{0.0, std::sin(alpha), std::sin(2.0 * alpha)};
+  const std::array<double, 3> cos_alpha{1.0, std::cos(alpha), std::cos(2.0 * alpha)};
   std::vector<char> drop(pts.size(), 0);
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
     if (std::abs(pts[i + 1].beam - pts[i].beam) > 2) continue;  // not neighbours
@@ -121,10 +131,10 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad
     // Eq. 1 alone would flag range noise at short range, where neighbouring beams are only
     // millimetres apart; a mixed point also needs a depth jump larger than the noise.
     if (far.range - near.range < config.trailing_min_jump_m) continue;
-    const double steps = std::max(1, std::abs(far.beam - near.beam));
-    if (TrailingAngle(far.range, near.range, alpha * steps) < config.trailing_min_angle_rad) {
-      drop[first_far ? i : i + 1] = 1;
-    }
+    const int steps = std::max(1, std::abs(far.beam - near.beam));
+    const double x = far.range - near.range * cos_alpha[steps];
+    const double y = near.range * sin_alpha[steps];
+    if (min_angle > 0.0 && x * sin_min - y * cos_min > 0.0) drop[first_far ? i : i + 1] = 1;
   }
   // Compact in place (no second buffer).
   std::size_t write = 0;

@@ -73,14 +73,14 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
 
   // Pair each leg with the nearest model corner under the initial pose; must be one-to-one.
   const auto corners = model.LegCentres();
+  std::array<Eigen::Vector2d, 4> placed;  // the corners under the initial pose
+  for (int k = 0; k < 4; ++k) placed[k] = T_init * corners[k];
   std::array<int, 4> corner_of{-1, -1, -1, -1};
   std::array<bool, 4> taken{false, false, false, false};
   for (int i = 0; i < count; ++i) {
     int best = 0;
     for (int k = 1; k < 4; ++k) {
-      if ((T_init * corners[k] - legs[i]).norm() < (T_init * corners[best] - legs[i]).norm()) {
-        best = k;
-      }
+      if ((placed[k] - legs[i]).norm() < (placed[best] - legs[i]).norm()) best = k;
     }
     if (taken[best]) return std::nullopt;
     taken[best] = true;
@@ -122,9 +122,10 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
     solver_converged = summary.status != decltype(solver)::HIT_MAX_ITERATIONS;
     // Cauchy: rho(e2) = s^2 log(1 + e2 / s^2), weight rho'(e2) = 1 / (1 + e2 / s^2).
     const geometry::Pose2 T(x(0), x(1), x(2));
+    const Eigen::Matrix2d R = T.rotation();
     robust_cost = 0.0;
     for (int i = 0; i < count; ++i) {
-      const double e2 = (legs[i] - T * cost.corners[i]).squaredNorm();
+      const double e2 = (legs[i] - (R * cost.corners[i] + T.translation())).squaredNorm();
       cost.sqrt_w[i] = std::sqrt(1.0 / (1.0 + e2 / s2));
       robust_cost += 0.5 * s2 * std::log1p(e2 / s2);
     }
@@ -151,7 +152,7 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
   dR << -R(1, 0), -R(0, 0), R(0, 0), -R(1, 0);  // d/dyaw of [c -s; s c]
   for (int i = 0; i < count; ++i) {
     const Eigen::Vector2d& ci = corners[corner_of[i]];
-    sum_sq += (legs[i] - out.T_lidar_shelf * ci).squaredNorm();
+    sum_sq += (legs[i] - (R * ci + out.T_lidar_shelf.translation())).squaredNorm();
     J.block<2, 2>(2 * i, 0) = -Eigen::Matrix2d::Identity();
     J.block<2, 1>(2 * i, 2) = -dR * ci;
   }

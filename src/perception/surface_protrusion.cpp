@@ -27,24 +27,56 @@ bool Neighbours(const ScanPoint& a, const ScanPoint& b, const ProtrusionLimits& 
          (b.p - a.p).squaredNorm() <= limits.surface_max_step_m * limits.surface_max_step_m;
 }
 
-// The points beside [begin, end): up to `count` consecutive beam neighbours on each side,
-// as [before, begin) and [end, after).
-std::size_t ReachBack(const std::vector<ScanPoint>& points, std::size_t begin, int count,
-                      const ProtrusionLimits& limits) {
-  std::size_t i = begin;
-  while (i > 0 && static_cast<int>(begin - i) < count &&
-         Neighbours(points[i - 1], points[i], limits)) {
-    --i;
+// The points [lo, hi) a search looks at, with what every piece among them asks again and again:
+// which consecutive points are beam neighbours, and the sums of ranges and beams from lo (a
+// wall seen at a grazing angle steps at every beam, and each step is tried with every piece
+// length that fits a leg; recomputing these per piece was a quarter of a one-shelf detection).
+class Surroundings {
+ public:
+  Surroundings(const std::vector<ScanPoint>& points, std::size_t lo, std::size_t hi,
+               const ProtrusionLimits& limits)
+      : points_(points),
+        lo_(lo),
+        linked_(hi - lo, 0),
+        range_sum_(hi - lo + 1, 0.0),
+        beam_sum_(hi - lo + 1, 0.0) {
+    for (std::size_t i = lo; i < hi; ++i) {
+      linked_[i - lo] = i > 0 && Neighbours(points[i - 1], points[i], limits);
+      range_sum_[i - lo + 1] = range_sum_[i - lo] + points[i].range;
+      beam_sum_[i - lo + 1] = beam_sum_[i - lo] + points[i].beam;
+    }
   }
+  const std::vector<ScanPoint>& points() const { return points_; }
+  std::size_t lo() const { return lo_; }
+  std::size_t hi() const { return lo_ + linked_.size(); }
+  // Points i - 1 and i are beam neighbours (lo < i < hi).
+  bool Linked(std::size_t i) const { return linked_[i - lo_] != 0; }
+  // Mean range and beam of [from, to) (lo <= from < to <= hi).
+  void Mean(std::size_t from, std::size_t to, double& range, double& beam) const {
+    const double n = static_cast<double>(to - from);
+    range = (range_sum_[to - lo_] - range_sum_[from - lo_]) / n;
+    beam = (beam_sum_[to - lo_] - beam_sum_[from - lo_]) / n;
+  }
+
+ private:
+  const std::vector<ScanPoint>& points_;
+  std::size_t lo_;
+  std::vector<char> linked_;
+  std::vector<double> range_sum_;
+  std::vector<double> beam_sum_;
+};
+
+// The points beside [begin, end): up to `count` consecutive beam neighbours on each side,
+// as [before, begin) and [end, after). The surroundings reach past every piece by more than
+// `count` (or to the scan's ends), so they never cut a side short.
+std::size_t ReachBack(const Surroundings& s, std::size_t begin, int count) {
+  std::size_t i = begin;
+  while (i > s.lo() && static_cast<int>(begin - i) < count && s.Linked(i)) --i;
   return i;
 }
-std::size_t ReachOn(const std::vector<ScanPoint>& points, std::size_t end, int count,
-                    const ProtrusionLimits& limits) {
+std::size_t ReachOn(const Surroundings& s, std::size_t end, int count) {
   std::size_t i = end;
-  while (i < points.size() && static_cast<int>(i - end) < count &&
-         Neighbours(points[i - 1], points[i], limits)) {
-    ++i;
-  }
+  while (i < s.hi() && static_cast<int>(i - end) < count && s.Linked(i)) ++i;
   return i;
 }
 
@@ -81,10 +113,11 @@ bool OpenEnd(const std::vector<ScanPoint>& points, const Beside& b,
 
 // The piece with the points right beside it; nullopt when either side has fewer than
 // kMinSidePoints.
-std::optional<Beside> PointsBeside(const std::vector<ScanPoint>& points, std::size_t begin,
-                                   std::size_t end, const ProtrusionLimits& limits) {
+std::optional<Beside> PointsBeside(const Surroundings& s, std::size_t begin, std::size_t end,
+                                   const ProtrusionLimits& limits) {
+  const std::vector<ScanPoint>& points = s.points();
   const int k = std::max(1, limits.surface_points);
-  const Beside b{ReachBack(points, begin, k, limits), begin, end, ReachOn(points, end, k, limits)};
+  const Beside b{ReachBack(s, begin, k), begin, end, ReachOn(s, end, k)};
   const std::size_t shorter = std::min(b.begin - b.before, b.after - b.end);
   const std::size_t longer = std::max(b.begin - b.before, b.after - b.end);
   if (longer < kMinSidePoints) return std::nullopt;
@@ -98,17 +131,9 @@ std::optional<Beside> PointsBeside(const std::vector<ScanPoint>& points, std::si
 // A quick look first (most pieces a step starts are none: a wall seen at a grazing angle steps
 // at every beam): the piece's mean range in front of the sides' mean ranges interpolated to its
 // middle beam by half the offset StandOut asks for.
-bool MayStandOut(const std::vector<ScanPoint>& points, const Beside& side,
-                 const ProtrusionLimits& limits) {
+bool MayStandOut(const Surroundings& s, const Beside& side, const ProtrusionLimits& limits) {
   auto mean_of = [&](std::size_t from, std::size_t to, double& range, double& beam) {
-    range = 0.0;
-    beam = 0.0;
-    for (std::size_t i = from; i < to; ++i) {
-      range += points[i].range;
-      beam += points[i].beam;
-    }
-    range /= static_cast<double>(to - from);
-    beam /= static_cast<double>(to - from);
+    s.Mean(from, to, range, beam);
   };
   double r_before, b_before, r_after, b_after, r_piece, b_piece;
   mean_of(side.begin, side.end, r_piece, b_piece);
@@ -129,8 +154,9 @@ bool MayStandOut(const std::vector<ScanPoint>& points, const Beside& side,
 // of its mean offset; nullopt when the points beside it do not make one surface. The points
 // beside it may lie beyond the cluster: the far point of the step at a leg's edge is often
 // dropped as a mixed point, which breaks the cluster there.
-std::optional<double> StandOut(const std::vector<ScanPoint>& points, const Beside& side,
+std::optional<double> StandOut(const Surroundings& s, const Beside& side,
                                const ProtrusionLimits& limits) {
+  const std::vector<ScanPoint>& points = s.points();
   const int k = std::max(1, limits.surface_points);
   const auto [before, begin, end, after] = side;
   // The surface's line from a wider stretch beside the piece (kLineReach times as many points
@@ -138,8 +164,8 @@ std::optional<double> StandOut(const std::vector<ScanPoint>& points, const Besid
   // one side and the rest of a leg on the other, and then a part of the leg stands out from it.
   // The points right beside the piece must lie on that line (below): at the apex of a box's
   // corner or a round object they stand out with the piece.
-  const std::size_t wide_before = ReachBack(points, begin, kLineReach * k, limits);
-  const std::size_t wide_after = ReachOn(points, end, kLineReach * k, limits);
+  const std::size_t wide_before = ReachBack(s, begin, kLineReach * k);
+  const std::size_t wide_after = ReachOn(s, end, kLineReach * k);
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   int n_wide = 0;
   auto each_wide = [&](auto&& f) {
@@ -188,14 +214,25 @@ std::optional<double> StandOut(const std::vector<ScanPoint>& points, const Besid
   return *offset / sigma;
 }
 
+// The surroundings of the points [begin, end): every point the sides and the surface's line of a
+// piece among them may reach, and one more on each side.
+Surroundings Around(const std::vector<ScanPoint>& points, std::size_t begin, std::size_t end,
+                    const ProtrusionLimits& limits) {
+  const std::size_t reach =
+      static_cast<std::size_t>(kLineReach * std::max(1, limits.surface_points)) + 1;
+  return Surroundings(points, begin > reach ? begin - reach : 0,
+                      std::min(points.size(), end + reach), limits);
+}
+
 }  // namespace
 
 std::optional<double> ProtrusionSigmas(const std::vector<ScanPoint>& points, std::size_t begin,
                                        std::size_t end, const ProtrusionLimits& limits) {
   if (begin >= end || end > points.size()) return std::nullopt;
-  const auto side = PointsBeside(points, begin, end, limits);
-  if (!side || !MayStandOut(points, *side, limits)) return std::nullopt;
-  return StandOut(points, *side, limits);
+  const Surroundings s = Around(points, begin, end, limits);
+  const auto side = PointsBeside(s, begin, end, limits);
+  if (!side || !MayStandOut(s, *side, limits)) return std::nullopt;
+  return StandOut(s, *side, limits);
 }
 
 std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
@@ -207,22 +244,23 @@ std::vector<PieceRange> SurfaceProtrusions(const std::vector<ScanPoint>& points,
   };
   std::vector<Scored> found;
   if (span.size() < 2) return {};
+  const Surroundings s = Around(points, span.begin, span.end, limits);
   const double reach = limits.roi_radius_m + limits.max_extent_m;
   const double reach2 = reach * reach;
   auto fits = [&](std::size_t a, std::size_t b) {  // [a, b) no wider than a leg
     return (points[b - 1].p - points[a].p).norm() <= limits.max_extent_m;
   };
   auto consider = [&](std::size_t a, std::size_t b, std::optional<Scored>& best) {
-    const auto side = PointsBeside(points, a, b, limits);
-    if (!side || !MayStandOut(points, *side, limits)) return;
-    const auto z = StandOut(points, *side, limits);
+    const auto side = PointsBeside(s, a, b, limits);
+    if (!side || !MayStandOut(s, *side, limits)) return;
+    const auto z = StandOut(s, *side, limits);
     if (z && *z >= limits.offset_sigmas && (!best || *z > best->z)) best = Scored{{a, b}, *z};
   };
   // A boundary k lies between points k - 1 and k; the pieces lie inside the span, the steps
   // that start or end them may cross its ends (a cluster break).
   for (std::size_t k = std::max<std::size_t>(span.begin, 1); k <= span.end && k < points.size();
        ++k) {
-    if (!Neighbours(points[k - 1], points[k], limits)) continue;
+    if (!s.Linked(k)) continue;
     if (limits.roi_centre && (points[k].p - *limits.roi_centre).squaredNorm() > reach2) continue;
     // A step toward the sensor at k starts a piece [k, j) ...
     if (k < span.end && points[k - 1].range - points[k].range >= limits.min_step_m) {
