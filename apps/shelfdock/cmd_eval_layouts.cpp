@@ -42,7 +42,8 @@ struct EvalLayoutsOptions {
   bool dump_all = false;  // --dump-failures writes every scene, not only the failing ones
   bool no_preset = false;
   bool map_knows_model = false;
-  int beams_in_sight = 0;  // 0: the generator's count
+  int beams_in_sight = 0;        // 0: the generator's count
+  std::vector<double> row_gaps;  // [m] min, max between footprints in rows; empty: the generator's
 };
 
 /// "lidar_tim571.yaml" -> "tim571".
@@ -115,6 +116,15 @@ int RunEvalLayouts(const EvalLayoutsOptions& opt) {
       opt.params.empty() ? perception::DetectorConfig{} : io::ReadDetectorConfig(opt.params);
   sim::LayoutConfig layout;
   layout.lidars = ReadLidars(opt.lidars);
+  if (!opt.row_gaps.empty()) {
+    // Rows are drawn with their gaps uniform in [min, max]; more than a few metres is no row.
+    const double lo = opt.row_gaps[0], hi = opt.row_gaps[1];
+    if (!(lo >= 0.0 && hi >= lo && hi <= 5.0)) {
+      throw io::InputError(kCommandLine, "--row-gaps", "needs 0 <= MIN <= MAX <= 5 [m]");
+    }
+    layout.row_min_gap_m = lo;
+    layout.row_max_gap_m = hi;
+  }
   const perception::Detector detector(models, detector_config);
 
   const auto start = std::chrono::steady_clock::now();
@@ -197,6 +207,11 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
                   "are sorted into findable or not (default: the generator's 2; 1 counts a leg "
                   "that peeks past an occluder by one beam)")
       ->check(CLI::Range(1, 100));
+  cmd->add_option("--row-gaps", opt->row_gaps,
+                  "MIN MAX [m]: gaps between neighbouring footprints in rows and aisles, drawn "
+                  "uniformly (default: the generator's 0.2 0.5); e.g. 0.05 1.2 puts some gaps as "
+                  "wide as a shelf, where a phantom on two neighbours' legs fits a model")
+      ->expected(2);
   cmd->add_option("--json", opt->json, "write the table and the failures as JSON");
   auto* dump =
       cmd->add_option("--dump-failures", opt->dump_failures,

@@ -105,6 +105,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("blend_narrow_bias_m", c.blend_narrow_bias_m);
   f.Read("min_confidence", c.min_confidence);
   f.Read("min_confidence_unvouched", c.min_confidence_unvouched);
+  f.Read("hidden_leg_competes", c.hidden_leg_competes);
   f.Read("overlap_margin_m", c.overlap_margin_m);
   f.RejectUnknown();
 }

@@ -157,15 +157,21 @@ struct EvidenceConfig {
   /// blend_max_step_m behind it may be a thinner leg blended with its background (MayBeBlend);
   /// a hypothesis on two or more such legs whose legs look narrower than its model's by more
   /// than blend_narrow_bias_m on average is not returned (blended_legs). 0 returns: off.
-  int blend_max_returns = 2;
-  double blend_max_step_m = 0.3;          ///< [m] see blend_max_returns
+  int blend_max_returns = 2;      ///< [-] a leg of at most this many returns may be a blend (see
+                                  ///< above); 0: off
+  double blend_max_step_m = 0.3;  ///< [m] see blend_max_returns
   double blend_narrow_bias_m = 0.006;     ///< [m] see blend_max_returns
   double min_confidence = 0.3;            ///< [-] below this a hypothesis is not returned
   double min_confidence_unvouched = 0.4;  ///< [-] the same for three legs (the fourth not seen)
                                           ///< with no preset or beyond the map's error of it
-  double overlap_margin_m = 0.05;         ///< [m] two hypotheses whose leg rectangles, each
-                                          ///< shrunk by this on every side, overlap compete as
-                                          ///< if they shared a leg (shelves do not interpenetrate)
+  bool hidden_leg_competes = true;  ///< three legs nothing vouches for, the fourth hidden behind
+                                    ///< something else or unseen in view, are never returned
+                                    ///< (hidden_leg_no_preset) but compete for their legs, so a
+                                    ///< phantom on two neighbours' legs cannot take them; false:
+                                    ///< dropped before the competition
+  double overlap_margin_m = 0.05;   ///< [m] two hypotheses whose leg rectangles, each
+                                    ///< shrunk by this on every side, overlap compete as
+                                    ///< if they shared a leg (shelves do not interpenetrate)
 };
 
 /// How far a returned shelf may stand from the preset (the pose the map expects it at). The
@@ -186,7 +192,7 @@ struct PresetGateConfig {
   /// whose fourth leg is hidden, the looser 3-leg err_sum bound, completing a shelf from two
   /// legs). Farther out, up to max_offset_m (a shelf pushed about), the scan alone must vouch
   /// for it, as without a preset. The layouts' presets are off by up to 0.2 m and 0.1 rad.
-  double map_error_m = 0.25;
+  double map_error_m = 0.25;        ///< [m] the map's own error of a shelf's pose (see above)
   double map_error_yaw_rad = 0.15;  ///< [rad] the same for the heading (modulo symmetry)
 };
 

@@ -79,6 +79,18 @@ def main():
         assert f"--model {truth['target']['model']}" in truth["detect"], truth["detect"]
         check_reproduction(shelfdock, source, t)
 
+    # --row-gaps: rows drawn with other gaps; each dumped scene's detect line reproduces it.
+    gaps = work / "layout_row_gaps"
+    shutil.rmtree(gaps, ignore_errors=True)
+    r = run(shelfdock, ["eval-layouts", "--scenes-per-class", "4", "--class", "row",
+                        "--row-gaps", "0.9", "1.1", "--dump-failures", str(gaps), "--dump-all"],
+            source)
+    assert r.returncode == 0, f"eval-layouts --row-gaps: exit {r.returncode}\n{r.stderr}"
+    for t in sorted(gaps.glob("*.truth.json")):
+        check_reproduction(shelfdock, source, t)
+    expect_bad_input(shelfdock, source, ["eval-layouts", "--row-gaps", "0.5", "0.2"], "--row-gaps")
+    expect_bad_input(shelfdock, source, ["eval-layouts", "--row-gaps", "-1", "0.2"], "--row-gaps")
+
     expect_bad_input(shelfdock, source, ["eval-layouts", "--class", "warehouse"], "--class")
     expect_bad_input(shelfdock, source, ["eval-layouts", "--scenes-per-class", "0"],
                      "--scenes-per-class")
