@@ -49,7 +49,7 @@ class Surroundings {
   const std::vector<ScanPoint>& points() const { return points_; }
   std::size_t lo() const { return lo_; }
   std::size_t hi() const { return lo_ + linked_.size(); }
-  // Points i - 1 and i are beam neighbours (lo < i < hi).
+  // Points i - 1 and i are beam neighbours (lo <= i < hi; never for i = 0).
   bool Linked(std::size_t i) const { return linked_[i - lo_] != 0; }
   // Mean range and beam of [from, to) (lo <= from < to <= hi).
   void Mean(std::size_t from, std::size_t to, double& range, double& beam) const {
@@ -132,19 +132,16 @@ std::optional<Beside> PointsBeside(const Surroundings& s, std::size_t begin, std
 // at every beam): the piece's mean range in front of the sides' mean ranges interpolated to its
 // middle beam by half the offset StandOut asks for.
 bool MayStandOut(const Surroundings& s, const Beside& side, const ProtrusionLimits& limits) {
-  auto mean_of = [&](std::size_t from, std::size_t to, double& range, double& beam) {
-    s.Mean(from, to, range, beam);
-  };
   double r_before, b_before, r_after, b_after, r_piece, b_piece;
-  mean_of(side.begin, side.end, r_piece, b_piece);
+  s.Mean(side.begin, side.end, r_piece, b_piece);
   if (side.before == side.begin || side.end == side.after) {  // an open end: one side's mean
     const bool open_after = side.end == side.after;
-    mean_of(open_after ? side.before : side.end, open_after ? side.begin : side.after, r_before,
-            b_before);
+    s.Mean(open_after ? side.before : side.end, open_after ? side.begin : side.after, r_before,
+           b_before);
     return r_before - r_piece >= 0.5 * limits.min_offset_m;
   }
-  mean_of(side.before, side.begin, r_before, b_before);
-  mean_of(side.end, side.after, r_after, b_after);
+  s.Mean(side.before, side.begin, r_before, b_before);
+  s.Mean(side.end, side.after, r_after, b_after);
   if (b_after == b_before) return false;
   const double t = (b_piece - b_before) / (b_after - b_before);
   return r_before + t * (r_after - r_before) - r_piece >= 0.5 * limits.min_offset_m;
