@@ -164,14 +164,13 @@ struct EvidenceConfig {
   double min_confidence = 0.3;            ///< [-] below this a hypothesis is not returned
   double min_confidence_unvouched = 0.4;  ///< [-] the same for three legs (the fourth not seen)
                                           ///< with no preset or beyond the map's error of it
-  bool hidden_leg_competes = true;  ///< three legs nothing vouches for, the fourth hidden behind
-                                    ///< something else or unseen in view, are never returned
-                                    ///< (hidden_leg_no_preset) but compete for their legs, so a
-                                    ///< phantom on two neighbours' legs cannot take them; false:
-                                    ///< dropped before the competition
-  double overlap_margin_m = 0.05;   ///< [m] two hypotheses whose leg rectangles, each
-                                    ///< shrunk by this on every side, overlap compete as
-                                    ///< if they shared a leg (shelves do not interpenetrate)
+  bool hidden_leg_competes = true;        ///< no preset: three legs, the fourth hidden or unseen
+                                          ///< in view, are never returned (hidden_leg_no_preset)
+                                          ///< but compete for their legs, so a phantom on two
+                                          ///< neighbours' legs cannot take them; false: dropped
+  double overlap_margin_m = 0.05;         ///< [m] two hypotheses whose leg rectangles, each
+                                          ///< shrunk by this on every side, overlap compete as
+                                          ///< if they shared a leg (shelves do not interpenetrate)
 };
 
 /// How far a returned shelf may stand from the preset (the pose the map expects it at). The
