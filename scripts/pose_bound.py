@@ -31,14 +31,13 @@ from collections import defaultdict
 import numpy as np
 import yaml
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from leg_errors import corners  # noqa: E402  (the shelf's leg centres, one definition)
+
 
 def leg_centres(model, pose):
     """The four leg centres (lidar frame) of a shelf of `model` at pose (x, y, yaw)."""
-    x, y, yaw = pose
-    c, s = math.cos(yaw), math.sin(yaw)
-    half_l, half_w = 0.5 * model["length"], 0.5 * model["width"]
-    return [(x + c * u - s * v, y + s * u + c * v)
-            for u, v in [(half_l, half_w), (half_l, -half_w), (-half_l, -half_w), (-half_l, half_w)]]
+    return corners(model, {"x": pose[0], "y": pose[1], "yaw": pose[2]})
 
 
 def hit_range(ux, uy, centre, yaw, leg):
@@ -95,14 +94,13 @@ def outline(centre, yaw, leg):
 
 
 def scene_bound(scan, truth, model, hit_sigmas, outline_edges=True):
-    """Fisher information of the target's pose from its scan; None when it has no returns."""
+    """Fisher information of the target's pose from its scan; None when no return hits its legs."""
     t = truth["target"]
     pose = np.array([t["x"], t["y"], t["yaw"]])
     sigma = truth["noise_sigma_m"]
     a0, da = scan["angle_min"], scan["angle_increment"]
     info = np.zeros((3, 3))
     eps = np.array([1e-6, 1e-6, 1e-6])
-    returns = 0
     legs_hit = set()
     for i, r in enumerate(scan["ranges"]):
         if r is None or not math.isfinite(r):
@@ -124,15 +122,13 @@ def scene_bound(scan, truth, model, hit_sigmas, outline_edges=True):
         if grad is None:
             continue
         info += np.outer(grad, grad) / sigma**2
-        returns += 1
         legs_hit.add(hit[1])
-    if returns == 0:
+    if not legs_hit:
         return None
     if not outline_edges:
-        return info, returns, len(legs_hit)
+        return info
     # Each leg with a return: its two outline edges as bearings, one beam's spacing / sqrt(12).
     sigma_b = abs(da) / math.sqrt(12.0)
-    centres = leg_centres(model, pose)
     for k in legs_hit:
         for side in (0, 1):
             grad = np.zeros(3)
@@ -143,8 +139,7 @@ def scene_bound(scan, truth, model, hit_sigmas, outline_edges=True):
                 down = outline(leg_centres(model, pose - step)[k], pose[2] - step[2], model["leg"])
                 grad[j] = math.remainder(up[side] - down[side], 2 * math.pi) / (2 * eps[j])
             info += np.outer(grad, grad) / sigma_b**2
-    del centres
-    return info, returns, len(legs_hit)
+    return info
 
 
 def main():
@@ -174,11 +169,10 @@ def main():
         scan = json.load(open(path.replace(".truth.json", ".scan.json")))
         target, first = truth["target"], truth["first"]
         model = models[target["model"]]
-        bound = scene_bound(scan, truth, model, args.hit_sigmas, not args.ranges_only)
-        if bound is None:
+        info = scene_bound(scan, truth, model, args.hit_sigmas, not args.ranges_only)
+        if info is None:
             skipped += 1
             continue
-        info, _, _ = bound
         try:
             cov = np.linalg.inv(info)
         except np.linalg.LinAlgError:
