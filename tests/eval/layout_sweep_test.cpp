@@ -87,17 +87,20 @@ struct PairedScene {
   LayoutSceneResult with;
 };
 
-// The scenes of `classes` (seeds seed0.. , `count` each), each scored with `off` and with the
-// default detector config.
+// The scenes of `classes` (seeds seed0.. , `count` each, drawn on `layout`, detected with the
+// preset or without), each scored with `off` and with the default detector config.
 std::vector<PairedScene> PairedSweeps(const std::vector<geometry::ShelfModel>& models,
                                       const std::vector<sim::LayoutClass>& classes,
                                       std::uint64_t seed0, int count,
-                                      const perception::DetectorConfig& off) {
+                                      const perception::DetectorConfig& off,
+                                      const sim::LayoutConfig& layout = LayoutWithPresets(),
+                                      bool use_preset = true) {
   std::vector<PairedScene> out;
   for (const sim::LayoutClass c : classes) {
-    const LayoutSweepConfig config = Scenes(c, seed0, count);
-    const auto without = RunSweep(models, config, off);
-    const auto with = RunSweep(models, config);
+    LayoutSweepConfig config = Scenes(c, seed0, count);
+    config.use_preset = use_preset;
+    const auto without = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
+    const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
     EXPECT_EQ(with.size(), without.size());
     for (std::size_t i = 0; i < std::min(with.size(), without.size()); ++i) {
       out.push_back({without[i], with[i]});
@@ -241,21 +244,15 @@ TEST(LayoutSweepTest, HiddenLegTrianglesKeepTheirLegsFromPhantomsWithoutAPreset)
   perception::DetectorConfig off;
   off.evidence.hidden_leg_competes = false;
   int phantom_scenes_with = 0, phantom_scenes_without = 0, right_with = 0, right_without = 0;
-  for (const sim::LayoutClass c :
-       {sim::LayoutClass::kRow, sim::LayoutClass::kAisle, sim::LayoutClass::kMixedNeighbours}) {
-    LayoutSweepConfig config = Scenes(c, 5001, 600);
-    config.use_preset = false;
-    const auto with = RunLayoutSweep(perception::Detector(models), models, layout, config);
-    const auto without = RunLayoutSweep(perception::Detector(models, off), models, layout, config);
-    ASSERT_EQ(with.size(), without.size());
-    for (std::size_t i = 0; i < with.size(); ++i) {
-      SCOPED_TRACE(std::string(sim::LayoutClassName(c)) + " " + std::to_string(with[i].seed));
-      EXPECT_LE(with[i].phantoms, without[i].phantoms);
-      phantom_scenes_with += with[i].phantoms > 0;
-      phantom_scenes_without += without[i].phantoms > 0;
-      right_with += with[i].outcome == SceneOutcome::kRightFirst;
-      right_without += without[i].outcome == SceneOutcome::kRightFirst;
-    }
+  for (const auto& [without, with] : PairedSweeps(
+           models,
+           {sim::LayoutClass::kRow, sim::LayoutClass::kAisle, sim::LayoutClass::kMixedNeighbours},
+           5001, 600, off, layout, /*use_preset=*/false)) {
+    EXPECT_LE(with.phantoms, without.phantoms) << io::LayoutFailureLine(with);
+    phantom_scenes_with += with.phantoms > 0;
+    phantom_scenes_without += without.phantoms > 0;
+    right_with += with.outcome == SceneOutcome::kRightFirst;
+    right_without += without.outcome == SceneOutcome::kRightFirst;
   }
   std::printf("[ hidden legs compete ] phantom scenes %d -> %d, right first %d -> %d of 1800\n",
               phantom_scenes_without, phantom_scenes_with, right_without, right_with);
