@@ -99,6 +99,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("leg_width_slack_m", c.leg_width_slack_m);
   f.Read("leg_width_bias_beams", c.leg_width_bias_beams);
   f.Read("leg_width_bias_slack_m", c.leg_width_bias_slack_m);
+  f.Read("leg_width_blur_beams", c.leg_width_blur_beams);
   f.Read("leg_width_scale_m", c.leg_width_scale_m);
   f.Read("blend_max_returns", c.blend_max_returns);
   f.Read("blend_max_step_m", c.blend_max_step_m);

@@ -91,6 +91,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.leg_width_slack_m >= 0.0, "evidence.leg_width_slack_m", ">= 0");
   k.Check(e.leg_width_bias_beams >= 0.0, "evidence.leg_width_bias_beams", ">= 0");
   k.Check(e.leg_width_bias_slack_m >= 0.0, "evidence.leg_width_bias_slack_m", ">= 0");
+  k.Check(e.leg_width_blur_beams >= 0.0, "evidence.leg_width_blur_beams", ">= 0 (0: off)");
   k.Check(e.leg_width_scale_m > 0.0, "evidence.leg_width_scale_m", "> 0");
   k.Check(e.blend_max_returns >= 0, "evidence.blend_max_returns", ">= 0 (0: off)");
   k.Check(e.blend_max_step_m > 0.0, "evidence.blend_max_step_m", "> 0");

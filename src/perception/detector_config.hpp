@@ -152,6 +152,11 @@ struct EvidenceConfig {
   double leg_width_bias_beams = 0.25;     ///< [beams] legs' mean width may differ by this many
                                           ///< beam spacings plus leg_width_bias_slack_m
   double leg_width_bias_slack_m = 0.006;  ///< [m] legs' mean width: see leg_width_bias_beams
+  double leg_width_blur_beams = 2.0;      ///< [beams] a leg with a background close behind it
+                                          ///< (blend_max_step_m) on a side, of a shelf the map
+                                          ///< vouches for, may look up to this many beam
+                                          ///< spacings too wide without counting in the legs'
+                                          ///< mean width (a wide beam's blended edge); 0: off
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
   /// A leg of at most blend_max_returns returns whose beams either side returned from at most
   /// blend_max_step_m behind it may be a thinner leg blended with its background (MayBeBlend);

@@ -141,6 +141,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.evidence.leg_width_bias_beams = -0.5; }},
     {"leg_width_bias_slack", "evidence.leg_width_bias_slack_m",
      [](auto& c) { c.evidence.leg_width_bias_slack_m = -0.01; }},
+    {"leg_width_blur_beams", "evidence.leg_width_blur_beams",
+     [](auto& c) { c.evidence.leg_width_blur_beams = -1.0; }},
     {"leg_width_scale", "evidence.leg_width_scale_m",
      [](auto& c) { c.evidence.leg_width_scale_m = 0.0; }},
     {"min_confidence_negative", "evidence.min_confidence",
