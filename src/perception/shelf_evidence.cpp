@@ -417,8 +417,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     // step behind it on both sides (ClosedLoneReturn). The sliver of an occluder cut by something
     // nearer, or one stray return of a wall beside a trailing point the filter dropped, is no leg.
     const bool on_edge = (role == SpanRole::kLeg || role == SpanRole::kLoneLeg) &&
-                         (span.size() >= 2 || ClosedLoneReturn(pre, s)) &&
                          OnEdgeLine(c, model, corners, config) &&
+                         (span.size() >= 2 || ClosedLoneReturn(pre, s)) &&
                          !HasPartner(pre, s, own_spans, config);
     if (inside == 0 && !on_edge) continue;
     // A lone leg is a leg only on an edge line; inside, an object like any other.
