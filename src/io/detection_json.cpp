@@ -62,6 +62,8 @@ nlohmann::json DetectionStatsToJson(const perception::DetectionStats& s) {
           {"model_pairs", s.model_pairs},
           {"hypotheses", s.hypotheses},
           {"range_noise_m", s.range_noise_m},
+          {"depth_steps", s.depth_steps},
+          {"bridged_steps", s.bridged_steps},
           {"rejected",
            {{"fit", s.rejected.fit},
             {"model", s.rejected.model},

@@ -72,6 +72,10 @@ void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
   f.Read("max_rms_m", c.max_rms_m);
   f.Read("background_mix_share", c.background_mix_share);
   f.Read("background_mix_max_m", c.background_mix_max_m);
+  f.Read("background_mix_any_share", c.background_mix_any_share);
+  f.Read("background_mix_any_min_bridged", c.background_mix_any_min_bridged);
+  f.Read("background_mix_any_cap_m", c.background_mix_any_cap_m);
+  f.Read("background_mix_probe_gap_m", c.background_mix_probe_gap_m);
   f.Read("returns_chi2_margin", c.returns_chi2_margin);
   f.RejectUnknown();
 }

@@ -81,6 +81,8 @@ struct DetectionStats {
   int hypotheses = 0;          ///< points-model pairs fitted and scored (one per pair)
   int completed_sets = 0;      ///< leg sets completed from two candidates (CompleteLegSets)
   double range_noise_m = 0.0;  ///< [m] range noise the scan shows (EstimateRangeNoise; 0: unknown)
+  int depth_steps = 0;         ///< large depth steps with no return between (EstimateEdgeBlending)
+  int bridged_steps = 0;       ///< large depth steps bridged by one mixed return
   RejectionCounts rejected;    ///< why hypotheses were not returned
 };
 

@@ -64,6 +64,12 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(f.max_rms_m > 0.0, "shelf_fit.max_rms_m", "> 0");
   k.Check(f.background_mix_share >= 0.0, "shelf_fit.background_mix_share", ">= 0");
   k.Check(f.background_mix_max_m >= 0.0, "shelf_fit.background_mix_max_m", ">= 0 (0: off)");
+  k.Check(f.background_mix_any_share >= 0.0 && f.background_mix_any_share <= 1.0,
+          "shelf_fit.background_mix_any_share", "in [0, 1] (0: never)");
+  k.Check(f.background_mix_any_min_bridged >= 1, "shelf_fit.background_mix_any_min_bridged",
+          ">= 1");
+  k.Check(f.background_mix_any_cap_m > 0.0, "shelf_fit.background_mix_any_cap_m", "> 0");
+  k.Check(f.background_mix_probe_gap_m > 0.0, "shelf_fit.background_mix_probe_gap_m", "> 0");
   k.Check(f.returns_chi2_margin >= 0.0, "shelf_fit.returns_chi2_margin", ">= 0 (0: never)");
 
   const auto& e = c.evidence;

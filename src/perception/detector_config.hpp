@@ -95,20 +95,27 @@ struct LegFitConfig {
 
 /// Paper 3.4: shelf centre and heading by nonlinear least squares (Eq. 8-11).
 struct ShelfFitConfig {
-  double loss_scale_m = 0.02;             ///< [m] Cauchy scale of the leg residuals
-  int max_iterations = 25;                ///< [-] solver iterations
-  double leg_radial_sigma_m = 0.004;      ///< [m] std of a fitted leg centre along its beam at
-                                          ///< 1 m; grows as sqrt(range) (fewer beams on the leg)
-  double leg_bearing_sigma_rad = 0.0015;  ///< [rad] its std across the beam, as a bearing
-  double min_leg_sigma_m = 0.003;         ///< [m] floor of the per-leg std used for the covariance
-  double max_rms_m = 0.03;                ///< [m] legs farther (RMS) from the model: rejected
-  double background_mix_share = 0.25;     ///< [-] the returned pose counts a leg's range as this
-                                          ///< share of the gap to a surface close behind it less
-                                          ///< certain (mixed returns pull it there) ...
-  double background_mix_max_m = 0.3;      ///< [m] ... a surface at most this far behind; 0: off
-  double returns_chi2_margin = 8.0;       ///< [-] models of one leg set whose legs' chi-squares
-                                          ///< differ by less are chosen on the shelf fitted to
-                                          ///< the legs' returns (FitShelfToReturns); 0: never
+  double loss_scale_m = 0.02;              ///< [m] Cauchy scale of the leg residuals
+  int max_iterations = 25;                 ///< [-] solver iterations
+  double leg_radial_sigma_m = 0.004;       ///< [m] std of a fitted leg centre along its beam at
+                                           ///< 1 m; grows as sqrt(range) (fewer beams on the leg)
+  double leg_bearing_sigma_rad = 0.0015;   ///< [rad] its std across the beam, as a bearing
+  double min_leg_sigma_m = 0.003;          ///< [m] floor of the per-leg std used for the covariance
+  double max_rms_m = 0.03;                 ///< [m] legs farther (RMS) from the model: rejected
+  double background_mix_share = 0.25;      ///< [-] the returned pose counts a leg's range as this
+                                           ///< share of the gap to a surface close behind it less
+                                           ///< certain (mixed returns pull it there) ...
+  double background_mix_max_m = 0.3;       ///< [m] ... a surface at most this far behind; 0: off
+  double background_mix_any_share = 0.5;   ///< [-] ... any surface behind when the scan bridges
+                                           ///< this share of its large depth steps with one
+                                           ///< mixed return (its sensor blends every echo of a
+                                           ///< beam: EstimateEdgeBlending); 0: never
+  int background_mix_any_min_bridged = 4;  ///< [-] ... and at least this many steps so
+  double background_mix_any_cap_m = 0.1;   ///< [m] ... its gap then counting as at most this
+  double background_mix_probe_gap_m = 0.6;  ///< [m] a large depth step, for that count
+  double returns_chi2_margin = 8.0;         ///< [-] models of one leg set whose legs' chi-squares
+                                            ///< differ by less are chosen on the shelf fitted to
+                                            ///< the legs' returns (FitShelfToReturns); 0: never
 };
 
 /// What the scan says about each hypothesis (legs seen, hidden or seen through; free space

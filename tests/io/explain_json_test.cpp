@@ -103,6 +103,11 @@ TEST(DetectionJson, StatsCarryTheRangeNoise) {
   perception::DetectionStats stats;
   stats.range_noise_m = 0.0123;
   EXPECT_DOUBLE_EQ(DetectionStatsToJson(stats)["range_noise_m"].get<double>(), 0.0123);
+  // So are the depth steps the scan shows and how many of them one mixed return bridges.
+  stats.depth_steps = 17;
+  stats.bridged_steps = 3;
+  EXPECT_EQ(DetectionStatsToJson(stats)["depth_steps"].get<int>(), 17);
+  EXPECT_EQ(DetectionStatsToJson(stats)["bridged_steps"].get<int>(), 3);
 
   geometry::LaserScan empty = scan;
   empty.ranges.assign(empty.ranges.size(), std::numeric_limits<double>::quiet_NaN());
