@@ -106,10 +106,11 @@ struct ShelfFitConfig {
                                            ///< share of the gap to a surface close behind it less
                                            ///< certain (mixed returns pull it there) ...
   double background_mix_max_m = 0.3;       ///< [m] ... a surface at most this far behind; 0: off
-  double background_mix_any_share = 0.5;   ///< [-] ... any surface behind when the scan bridges
-                                           ///< this share of its large depth steps with one
-                                           ///< mixed return (its sensor blends every echo of a
-                                           ///< beam: EstimateEdgeBlending); 0: never
+  double background_mix_any_share = 0.5;   ///< [-] ... any surface behind a leg of one or two
+                                           ///< returns when the scan bridges this share of its
+                                           ///< large depth steps with one mixed return (its
+                                           ///< sensor blends every echo of a beam:
+                                           ///< EstimateEdgeBlending); 0: never
   int background_mix_any_min_bridged = 4;  ///< [-] ... and at least this many steps so
   double background_mix_any_cap_m = 0.1;   ///< [m] ... its gap then counting as at most this
   double background_mix_probe_gap_m = 0.6;  ///< [m] a large depth step, for that count
