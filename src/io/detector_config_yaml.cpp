@@ -26,6 +26,9 @@ void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
   f.Read("inner_surface_points", c.inner_surface_points);
   f.Read("split_noise_steps", c.split_noise_steps);
   f.Read("join_noise_breaks", c.join_noise_breaks);
+  f.Read("blend_probe_gap_m", c.blend_probe_gap_m);
+  f.Read("blend_any_share", c.blend_any_share);
+  f.Read("blend_any_min_bridged", c.blend_any_min_bridged);
   f.Read("surface_tolerance_m", c.surface_tolerance_m);
   f.Read("surface_noise_sigmas", c.surface_noise_sigmas);
   f.Read("surface_max_step_m", c.surface_max_step_m);
@@ -72,10 +75,7 @@ void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
   f.Read("max_rms_m", c.max_rms_m);
   f.Read("background_mix_share", c.background_mix_share);
   f.Read("background_mix_max_m", c.background_mix_max_m);
-  f.Read("background_mix_any_share", c.background_mix_any_share);
-  f.Read("background_mix_any_min_bridged", c.background_mix_any_min_bridged);
   f.Read("background_mix_any_cap_m", c.background_mix_any_cap_m);
-  f.Read("background_mix_probe_gap_m", c.background_mix_probe_gap_m);
   f.Read("returns_chi2_margin", c.returns_chi2_margin);
   f.RejectUnknown();
 }
@@ -104,6 +104,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("leg_width_bias_beams", c.leg_width_bias_beams);
   f.Read("leg_width_bias_slack_m", c.leg_width_bias_slack_m);
   f.Read("leg_width_blur_beams", c.leg_width_blur_beams);
+  f.Read("leg_width_blend_beams", c.leg_width_blend_beams);
   f.Read("leg_width_scale_m", c.leg_width_scale_m);
   f.Read("blend_max_returns", c.blend_max_returns);
   f.Read("blend_max_step_m", c.blend_max_step_m);

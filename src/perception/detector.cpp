@@ -9,7 +9,6 @@
 #include <Eigen/Dense>
 
 #include "geometry/angle.hpp"
-#include "perception/edge_blending.hpp"
 #include "perception/footprint_overlap.hpp"
 #include "perception/leg_competition.hpp"
 #include "perception/leg_completion.hpp"
@@ -76,7 +75,6 @@ struct ScoreInputs {
   const std::optional<geometry::Pose2>& T_lidar_preset;
   const DetectorConfig& config;
   double range_noise_m;    // the scan's own (EstimateRangeNoise), or the configured one
-  bool blends_any_gap;     // the scan's sensor blends echoes however far apart (BlendsAnyGap)
   bool completed = false;  // the sets were completed from two legs and the preset
 };
 
@@ -114,33 +112,12 @@ void Count(Verdict verdict, RejectionCounts& rejected) {
   }
 }
 
-// True when the scan's own depth steps show that its sensor blends the echoes of a beam however
-// far apart they are (EstimateEdgeBlending, shelf_fit.background_mix_any_*): a pulsed sensor
-// that separates far echoes, as our simulator's and the real recordings', leaves its large
-// steps mostly clean (3 % of them bridged in our scenes, 1.5 % and 7.7 % in the two real bags;
-// 0 of 2000 simulated and 0 of 1965 real scans with 4 bridged and half of them), while one that
-// blends every echo (config/lidar_variants/blend_any.yaml: 84 % bridged, 757 of 1000 scans
-// over the bar) turns a thin leg's returns before a far background into blends pulled toward
-// it by centimetres. A scan with few steps stays below the bar and keeps the cap.
-bool BlendsAnyGap(const std::vector<ScanPoint>& points, const ShelfFitConfig& config,
-                  DetectionStats& stats) {
-  // Each surface of a step goes on for a beam within this (10-20 mm noise, a surface seen
-  // obliquely), and a mixed point lies farther than this from both.
-  constexpr double kFlat_m = 0.1;
-  const EdgeBlendingEstimate e =
-      EstimateEdgeBlending(points, config.background_mix_probe_gap_m, kFlat_m);
-  stats.depth_steps = e.steps;
-  stats.bridged_steps = e.bridged;
-  return config.background_mix_any_share > 0.0 &&
-         e.bridged >= config.background_mix_any_min_bridged &&
-         e.Share() >= config.background_mix_any_share;
-}
-
 // [m^2] A surface close behind a leg (a wall a few centimetres behind a shelf pushed against
 // it) mixes into the returns whose footprint straddles the leg's outline and pulls their ranges
 // toward it by up to the gap: for the returned pose the leg's range counts as that much less
 // certain (the variance of that pull; 0 with no such surface). A sensor that blends however far
-// apart the echoes are (`any_gap`, BlendsAnyGap) pulls them toward any surface behind: a 40 mm
+// apart the echoes are (`any_gap`, PreprocessOutput::blends_every_echo) pulls them toward any
+// surface behind: a 40 mm
 // leg 3 m before a wall, seen by beams mostly on the leg, returned 5-10 cm behind it, and such
 // legs placed their shelf 5-10 cm off (blend_any, eval-layouts seeds 1: 65 scenes with a shelf
 // returned so). There every surface behind a leg of one or two returns counts, its gap taken as
@@ -153,7 +130,7 @@ bool BlendsAnyGap(const std::vector<ScanPoint>& points, const ShelfFitConfig& co
 double BackgroundMixVariance(const Cluster& c, const ShelfFitConfig& config, bool any_gap) {
   // Only a leg seen by one or two returns, each of them an edge beam of its outline: a leg seen
   // by more has returns whose footprint lies on it alone, and its range is measured.
-  if (c.points.size() > 2) any_gap = false;
+  if (c.points.size() > 2 || config.background_mix_any_cap_m <= 0.0) any_gap = false;
   std::optional<double> gap;
   for (const auto& behind : {c.edges.before_step_m, c.edges.after_step_m}) {
     if (behind && *behind > 0.0 && (any_gap || *behind <= config.background_mix_max_m) &&
@@ -181,7 +158,8 @@ std::array<LegSigma, 4> LegSigmas(const std::array<Eigen::Vector2d, 4>& legs, co
     const double step = range * std::abs(in.angle_increment_rad);
     // A blended leg's range is the completed shelf's, not a measurement: only its bearing counts.
     const double mix2 =
-        with_background ? BackgroundMixVariance(c, in.config.shelf_fit, in.blends_any_gap) : 0.0;
+        with_background ? BackgroundMixVariance(c, in.config.shelf_fit, in.pre.blends_every_echo)
+                        : 0.0;
     sigma[i].along_m = c.assumed_range_m
                            ? in.config.completion.max_blend_m
                            : std::sqrt(in.range_noise_m * in.range_noise_m / n + kFloor2 + mix2);
@@ -225,7 +203,7 @@ bool WidenForBackground(std::vector<LegReturns>& returns, const LegSet& set,
     if (r.points == nullptr) continue;
     const Cluster& c = in.pre.candidates[set.legs[i]];
     const double n = static_cast<double>(c.points.size());
-    const double mix2 = BackgroundMixVariance(c, in.config.shelf_fit, in.blends_any_gap);
+    const double mix2 = BackgroundMixVariance(c, in.config.shelf_fit, in.pre.blends_every_echo);
     const double sigma = std::sqrt(in.range_noise_m * in.range_noise_m + n * mix2);
     if (sigma > r.range_sigma_m) {
       r.range_sigma_m = sigma;
@@ -490,6 +468,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   stats.trailing_removed = pre.trailing_removed;
   stats.leg_candidates = static_cast<int>(pre.candidates.size());
   stats.range_noise_m = pre.range_noise_m;
+  stats.depth_steps = pre.edge_blending.steps;
+  stats.bridged_steps = pre.edge_blending.bridged;
   std::vector<Eigen::Vector2d> centres;
   centres.reserve(pre.candidates.size());
   // The points lie on a leg's near side, so its centroid sits short of its centre by about half
@@ -532,8 +512,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
                      angle_increment_rad,
                      T_lidar_preset,
                      config_,
-                     pre.range_noise_m > 0.0 ? pre.range_noise_m : config_.leg_fit.range_sigma_m,
-                     BlendsAnyGap(points, config_.shelf_fit, stats)};
+                     pre.range_noise_m > 0.0 ? pre.range_noise_m : config_.leg_fit.range_sigma_m};
   // The shelf fitted to a hypothesis' legs' returns (FitShelfToReturns), made once.
   auto on_returns = [&](Hypothesis& h) -> const ShelfReturnFitResult& {
     if (!h.on_returns) {

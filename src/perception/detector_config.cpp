@@ -30,6 +30,10 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           ">= 2 (a line on each side)");
   k.Check(p.min_point_fraction >= 0.0 && p.min_point_fraction <= 1.0,
           "preprocess.min_point_fraction", "in [0, 1]");
+  k.Check(p.blend_probe_gap_m > 0.0, "preprocess.blend_probe_gap_m", "> 0");
+  k.Check(p.blend_any_share >= 0.0 && p.blend_any_share <= 1.0, "preprocess.blend_any_share",
+          "in [0, 1] (0: never)");
+  k.Check(p.blend_any_min_bridged >= 1, "preprocess.blend_any_min_bridged", ">= 1");
 
   const auto& s = c.leg_search;
   k.Check(s.pair_tolerance_m > 0.0, "leg_search.pair_tolerance_m", "> 0");
@@ -64,12 +68,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(f.max_rms_m > 0.0, "shelf_fit.max_rms_m", "> 0");
   k.Check(f.background_mix_share >= 0.0, "shelf_fit.background_mix_share", ">= 0");
   k.Check(f.background_mix_max_m >= 0.0, "shelf_fit.background_mix_max_m", ">= 0 (0: off)");
-  k.Check(f.background_mix_any_share >= 0.0 && f.background_mix_any_share <= 1.0,
-          "shelf_fit.background_mix_any_share", "in [0, 1] (0: never)");
-  k.Check(f.background_mix_any_min_bridged >= 1, "shelf_fit.background_mix_any_min_bridged",
-          ">= 1");
-  k.Check(f.background_mix_any_cap_m > 0.0, "shelf_fit.background_mix_any_cap_m", "> 0");
-  k.Check(f.background_mix_probe_gap_m > 0.0, "shelf_fit.background_mix_probe_gap_m", "> 0");
+  k.Check(f.background_mix_any_cap_m >= 0.0, "shelf_fit.background_mix_any_cap_m",
+          ">= 0 (0: never)");
   k.Check(f.returns_chi2_margin >= 0.0, "shelf_fit.returns_chi2_margin", ">= 0 (0: never)");
 
   const auto& e = c.evidence;
@@ -98,6 +98,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.leg_width_bias_beams >= 0.0, "evidence.leg_width_bias_beams", ">= 0");
   k.Check(e.leg_width_bias_slack_m >= 0.0, "evidence.leg_width_bias_slack_m", ">= 0");
   k.Check(e.leg_width_blur_beams >= 0.0, "evidence.leg_width_blur_beams", ">= 0 (0: off)");
+  k.Check(e.leg_width_blend_beams >= 0.0, "evidence.leg_width_blend_beams", ">= 0 (0: off)");
   k.Check(e.leg_width_scale_m > 0.0, "evidence.leg_width_scale_m", "> 0");
   k.Check(e.blend_max_returns >= 0, "evidence.blend_max_returns", ">= 0 (0: off)");
   k.Check(e.blend_max_step_m > 0.0, "evidence.blend_max_step_m", "> 0");

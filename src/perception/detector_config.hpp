@@ -46,9 +46,15 @@ struct PreprocessConfig {
   double surface_noise_sigmas = 3.0;  ///< [-] or within this many times the range noise, if more
   double surface_max_step_m = 0.25;   ///< [m] farthest beam neighbour taken for the same surface
                                       ///< (0: the rule is off)
-  bool join_noise_breaks = true;  ///< neighbouring clusters whose breaks the range noise explains
-                                  ///< (no deeper than the split step) are offered whole as a
-                                  ///< leg candidate too, when the whole fits a leg
+  bool join_noise_breaks = true;   ///< neighbouring clusters whose breaks the range noise explains
+                                   ///< (no deeper than the split step) are offered whole as a
+                                   ///< leg candidate too, when the whole fits a leg
+  double blend_probe_gap_m = 0.6;  ///< [m] a large depth step, for the scan's count of them
+                                   ///< (EstimateEdgeBlending)
+  double blend_any_share = 0.5;    ///< [-] a scan that bridges this share of them with one mixed
+                                   ///< return comes from a sensor that blends every echo of a
+                                   ///< beam (PreprocessOutput::blends_every_echo); 0: never
+  int blend_any_min_bridged = 4;   ///< [-] ... and at least this many of them
 };
 
 /// Paper 3.2: pruned rectangle / right-triangle search over cluster centres.
@@ -95,28 +101,24 @@ struct LegFitConfig {
 
 /// Paper 3.4: shelf centre and heading by nonlinear least squares (Eq. 8-11).
 struct ShelfFitConfig {
-  double loss_scale_m = 0.02;              ///< [m] Cauchy scale of the leg residuals
-  int max_iterations = 25;                 ///< [-] solver iterations
-  double leg_radial_sigma_m = 0.004;       ///< [m] std of a fitted leg centre along its beam at
-                                           ///< 1 m; grows as sqrt(range) (fewer beams on the leg)
-  double leg_bearing_sigma_rad = 0.0015;   ///< [rad] its std across the beam, as a bearing
-  double min_leg_sigma_m = 0.003;          ///< [m] floor of the per-leg std used for the covariance
-  double max_rms_m = 0.03;                 ///< [m] legs farther (RMS) from the model: rejected
-  double background_mix_share = 0.25;      ///< [-] the returned pose counts a leg's range as this
-                                           ///< share of the gap to a surface close behind it less
-                                           ///< certain (mixed returns pull it there) ...
-  double background_mix_max_m = 0.3;       ///< [m] ... a surface at most this far behind; 0: off
-  double background_mix_any_share = 0.5;   ///< [-] ... any surface behind a leg of one or two
-                                           ///< returns when the scan bridges this share of its
-                                           ///< large depth steps with one mixed return (its
-                                           ///< sensor blends every echo of a beam:
-                                           ///< EstimateEdgeBlending); 0: never
-  int background_mix_any_min_bridged = 4;  ///< [-] ... and at least this many steps so
-  double background_mix_any_cap_m = 0.1;   ///< [m] ... its gap then counting as at most this
-  double background_mix_probe_gap_m = 0.6;  ///< [m] a large depth step, for that count
-  double returns_chi2_margin = 8.0;         ///< [-] models of one leg set whose legs' chi-squares
-                                            ///< differ by less are chosen on the shelf fitted to
-                                            ///< the legs' returns (FitShelfToReturns); 0: never
+  double loss_scale_m = 0.02;             ///< [m] Cauchy scale of the leg residuals
+  int max_iterations = 25;                ///< [-] solver iterations
+  double leg_radial_sigma_m = 0.004;      ///< [m] std of a fitted leg centre along its beam at
+                                          ///< 1 m; grows as sqrt(range) (fewer beams on the leg)
+  double leg_bearing_sigma_rad = 0.0015;  ///< [rad] its std across the beam, as a bearing
+  double min_leg_sigma_m = 0.003;         ///< [m] floor of the per-leg std used for the covariance
+  double max_rms_m = 0.03;                ///< [m] legs farther (RMS) from the model: rejected
+  double background_mix_share = 0.25;     ///< [-] the returned pose counts a leg's range as this
+                                          ///< share of the gap to a surface close behind it less
+                                          ///< certain (mixed returns pull it there) ...
+  double background_mix_max_m = 0.3;      ///< [m] ... a surface at most this far behind; 0: off
+  double background_mix_any_cap_m = 0.1;  ///< [m] ... any surface behind a leg of one or two
+                                          ///< returns, its gap counting as at most this, where
+                                          ///< the scan's sensor blends every echo of a beam
+                                          ///< (PreprocessOutput::blends_every_echo); 0: never
+  double returns_chi2_margin = 8.0;       ///< [-] models of one leg set whose legs' chi-squares
+                                          ///< differ by less are chosen on the shelf fitted to
+                                          ///< the legs' returns (FitShelfToReturns); 0: never
 };
 
 /// What the scan says about each hypothesis (legs seen, hidden or seen through; free space
@@ -165,6 +167,11 @@ struct EvidenceConfig {
                                           ///< vouches for, may look up to this many beam
                                           ///< spacings too wide without counting in the legs'
                                           ///< mean width (a wide beam's blended edge); 0: off
+  double leg_width_blend_beams = 0.5;     ///< [beams] the legs' mean seen width may be this many
+                                          ///< beam spacings narrower still where the scan's
+                                          ///< sensor blends every echo (its legs' edge beams
+                                          ///< return blends: PreprocessOutput::
+                                          ///< blends_every_echo); 0: off
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
   /// A leg of at most blend_max_returns returns whose beams either side returned from at most
   /// blend_max_step_m behind it may be a thinner leg blended with its background (MayBeBlend);

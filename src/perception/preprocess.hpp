@@ -9,6 +9,7 @@
 #include "geometry/pose2.hpp"
 #include "geometry/shelf_model.hpp"
 #include "perception/detector_config.hpp"
+#include "perception/edge_blending.hpp"
 #include "perception/scan_point.hpp"
 #include "perception/silhouette_edges.hpp"
 
@@ -53,8 +54,13 @@ struct PreprocessOutput {
   int clusters = 0;                 ///< clusters inside the ROI, before screening
   int trailing_removed = 0;         ///< points removed by the Eq. 1 filter
   double range_noise_m = 0.0;       ///< [m] the scan's range noise (EstimateRangeNoise; 0: unknown)
-  int split_candidates = 0;         ///< candidates cut from wider clusters at a depth step
-  int joined_candidates = 0;        ///< candidates joined from fragments of one leg (noise breaks)
+  EdgeBlendingEstimate edge_blending;  ///< its large depth steps and the bridged ones
+  /// Whether they show a sensor that blends every echo of a beam however far apart
+  /// (PreprocessConfig::blend_any_share, blend_any_min_bridged): its thin legs' edge beams
+  /// return blends with what stands behind them.
+  bool blends_every_echo = false;
+  int split_candidates = 0;   ///< candidates cut from wider clusters at a depth step
+  int joined_candidates = 0;  ///< candidates joined from fragments of one leg (noise breaks)
 };
 
 /// Ranges to points, skipping NaN, infinite, zero and out-of-[range_min, range_max] returns.
