@@ -117,14 +117,13 @@ void Count(Verdict verdict, RejectionCounts& rejected) {
 // toward it by up to the gap: for the returned pose the leg's range counts as that much less
 // certain (the variance of that pull; 0 with no such surface). A sensor that blends however far
 // apart the echoes are (`any_gap`, PreprocessOutput::blends_every_echo) pulls them toward any
-// surface behind: a 40 mm
-// leg 3 m before a wall, seen by beams mostly on the leg, returned 5-10 cm behind it, and such
-// legs placed their shelf 5-10 cm off (blend_any, eval-layouts seeds 1: 65 scenes with a shelf
-// returned so). There every surface behind a leg of one or two returns counts, its gap taken as
-// at most background_mix_any_cap_m: the blends' ranges then weigh less, and not nothing (with the
-// gap uncapped: 52 such scenes, the centre's p95 at 10 mm 18.7 -> 19.4 mm; capped at 0.1 m: 51
-// and 16.2 mm, the right shelf first in 4 more; at 0.04 m: 62 and 14.2 mm, for legs of any
-// number of returns). Legs of three returns or more too: the same 51 scenes and 14.8 mm, but
+// surface behind: a 40 mm leg 3 m before a wall, seen by beams mostly on the leg, returned 5-10
+// cm behind it, and such legs placed their shelf 5-10 cm off (blend_any, eval-layouts seeds 1: 65
+// scenes with a shelf returned so). There every surface behind a leg of one or two returns counts,
+// its gap taken as at most background_mix_any_cap_m: the blends' ranges then weigh less, and not
+// nothing (with the gap uncapped: 52 such scenes, the centre's p95 at 10 mm 18.7 -> 19.4 mm; capped
+// at 0.1 m: 51 and 16.2 mm, the right shelf first in 4 more; at 0.04 m: 62 and 14.2 mm, for legs of
+// any number of returns). Legs of three returns or more too: the same 51 scenes and 14.8 mm, but
 // where the scan's bridged steps are veil points beside clean legs (the rule forced on in our
 // scenes, every scan with one bridged step) the p95 went 7.0 -> 8.1 mm against 7.0 -> 7.2.
 double BackgroundMixVariance(const Cluster& c, const ShelfFitConfig& config, bool any_gap) {

@@ -57,6 +57,15 @@ sim::LayoutConfig LayoutWithPresets() {
   return layout;
 }
 
+// Scenes drawn with the WLR-716 whose receiver blends every echo of a beam however far apart
+// (config/lidar_variants/blend_any.yaml) as the only LiDAR.
+sim::LayoutConfig BlendAnyLayout() {
+  sim::LayoutConfig layout;
+  layout.lidars = {
+      {"blend_any", io::ReadLidarConfig(kRoot + "/config/lidar_variants/blend_any.yaml")}};
+  return layout;
+}
+
 // The sweep over `count` generated scenes of class `layout_class` from seed `seed0` (the issue's
 // radii).
 LayoutSweepConfig Scenes(sim::LayoutClass layout_class, std::uint64_t seed0, int count) {
@@ -699,9 +708,7 @@ TEST(LayoutSceneTest, LegsBeforeAWallCountLessForThePose) {
 // phantom; now each returns it first, within 5 cm, and nothing farther from a true shelf.
 TEST(LayoutSceneTest, LegsSeenByABlendingReceiverCountLessForThePose) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  sim::LayoutConfig layout;
-  layout.lidars = {
-      {"blend_any", io::ReadLidarConfig(kRoot + "/config/lidar_variants/blend_any.yaml")}};
+  const sim::LayoutConfig layout = BlendAnyLayout();
   perception::DetectorConfig off;
   off.shelf_fit.background_mix_any_cap_m = 0.0;
   const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
@@ -727,9 +734,7 @@ TEST(LayoutSceneTest, LegsSeenByABlendingReceiverCountLessForThePose) {
 // off (0) nothing.
 TEST(LayoutSceneTest, LegsSeenByABlendingReceiverMayLookNarrower) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  sim::LayoutConfig layout;
-  layout.lidars = {
-      {"blend_any", io::ReadLidarConfig(kRoot + "/config/lidar_variants/blend_any.yaml")}};
+  const sim::LayoutConfig layout = BlendAnyLayout();
   perception::DetectorConfig off;
   off.evidence.leg_width_blend_beams = 0.0;
   const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
