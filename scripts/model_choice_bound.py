@@ -61,15 +61,20 @@ def measurements(theta, model, beams, hit_legs):
     return np.array(out)
 
 
-def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams):
+def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edges=True):
     """Fisher information of (x, y, yaw, L, W) from the scan's returns on the target's legs and
-    their outline edges; None when no return hits them."""
+    their outline edges; None when no return hits them. With `seen_edges`, only an edge the scan
+    shows counts: the beam just past the leg's outermost hit there returns from farther behind (a
+    background or a blend with it), not from something nearer, nothing, or the leg's own next
+    return; otherwise every hit leg's two edges count."""
     t = truth["target"]
     pose = np.array([t["x"], t["y"], t["yaw"]])
     sigma = truth["noise_sigma_m"]
     a0, da = scan["angle_min"], scan["angle_increment"]
+    ranges = scan["ranges"]
     beams = []
-    for i, r in enumerate(scan["ranges"]):
+    beam_index = []
+    for i, r in enumerate(ranges):
         if r is None or not math.isfinite(r):
             continue
         a = a0 + i * da
@@ -77,9 +82,24 @@ def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams):
         hit = first_hit(ux, uy, model, pose)
         if hit is not None and abs(r - hit[0]) <= hit_sigmas * sigma:
             beams.append((ux, uy, hit[1]))
+            beam_index.append(i)
     if not beams:
         return None
     hit_legs = {b[2] for b in beams}
+
+    def shows_edge(outer, neighbour):
+        if neighbour < 0 or neighbour >= len(ranges):
+            return False
+        r = ranges[neighbour]
+        return r is not None and math.isfinite(r) and r > ranges[outer] + hit_sigmas * sigma
+
+    edge_weights = []
+    for k in sorted(hit_legs):
+        idx = [i for i, b in zip(beam_index, beams) if b[2] == k]
+        low, high = (min(idx), max(idx)) if da > 0 else (max(idx), min(idx))
+        step = 1 if da > 0 else -1
+        for outer, neighbour in ((low, low - step), (high, high + step)):  # outline() order
+            edge_weights.append(1.0 if not seen_edges or shows_edge(outer, neighbour) else 0.0)
     theta = np.array([*pose, model["length"], model["width"]])
     eps = 1e-6
     columns = []
@@ -97,7 +117,7 @@ def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams):
     jac = np.column_stack(columns)
     edge_w = 1.0 / (edge_sigma_beams * da)**2 if edge_sigma_beams > 0 else 0.0
     weights = np.concatenate([np.full(len(beams), 1.0 / sigma**2),
-                              np.full(2 * len(hit_legs), edge_w)])
+                              edge_w * np.array(edge_weights)])
     return jac.T @ (weights[:, None] * jac), len(hit_legs)
 
 
@@ -105,7 +125,8 @@ def phi(x):
     return 0.5 * math.erfc(-x / math.sqrt(2.0))
 
 
-def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1.0 / math.sqrt(12.0)):
+def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1.0 / math.sqrt(12.0),
+          seen_edges=True):
     """Per group ("all", "<legs> legs, <noise> mm", each lidar): scenes, the floor's expected count
     of wrong models and the detector's, over the scenes of `dump_dir` whose target has a twin in
     `models` (name -> model) and whose first detection stands at the target. Also how many such
@@ -134,7 +155,7 @@ def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1
             continue
         model = models[target["model"]]
         scan = json.load(open(path.replace(".truth.json", ".scan.json")))
-        got = scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams)
+        got = scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edges)
         if got is None:
             skipped += 1
             continue
@@ -166,10 +187,12 @@ def main():
     ap.add_argument("--hit-sigmas", type=float, default=3.0)
     ap.add_argument("--edge-sigma-beams", type=float, default=1.0 / math.sqrt(12.0),
                     help="std of an outline edge's bearing in beam spacings (0: ranges alone)")
+    ap.add_argument("--all-edges", action="store_true",
+                    help="count both outline edges of every hit leg, shown by the scan or not")
     args = ap.parse_args()
     models = {m["name"]: m for m in yaml.safe_load(open(args.models))["models"]}
     groups, skipped = bound(args.dir, models, args.twin_within, args.hit_sigmas,
-                            args.edge_sigma_beams)
+                            args.edge_sigma_beams, not args.all_edges)
     print(f"scenes whose target has a twin model, first detection at the target ({skipped} "
           "skipped: no return on its legs)")
     print(f"{'':16s} {'n':>6s} {'floor: expected wrong':>22s} {'detector wrong':>15s}")
