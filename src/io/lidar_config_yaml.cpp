@@ -1,5 +1,7 @@
 #include "io/lidar_config_yaml.hpp"
 
+#include <string>
+
 #include "io/yaml_fields.hpp"
 
 namespace shelfdock::io {
@@ -26,6 +28,17 @@ sim::LidarConfig ReadLidarConfig(const std::string& path) {
   f.Read("footprint_rays", c.footprint_rays);
   f.Read("min_echo_fraction", c.min_echo_fraction);
   f.Read("echo_separation_m", c.echo_separation_m);
+  std::string echo_choice = "first";
+  f.Read("echo_choice", echo_choice);
+  if (echo_choice == "first") {
+    c.echo_choice = sim::EchoChoice::kFirst;
+  } else if (echo_choice == "strongest") {
+    c.echo_choice = sim::EchoChoice::kStrongest;
+  } else if (echo_choice == "last") {
+    c.echo_choice = sim::EchoChoice::kLast;
+  } else {
+    f.Require(false, "echo_choice", "first, strongest or last");
+  }
   f.Read("enable_dropouts", c.enable_dropouts);
   f.Read("dropout_probability", c.dropout_probability);
   f.Read("dark_dropout_gain", c.dark_dropout_gain);

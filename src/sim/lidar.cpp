@@ -121,9 +121,9 @@ Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_l
   // A depth edge. The sub-rays' returns form pulses: returns closer in range than
   // echo_separation_m overlap in time and blend into one echo at their energy-weighted mean range
   // (the mixed "trailing" points of paper 3.1); returns farther apart are separate pulses, and a
-  // pulsed time-of-flight receiver reports the first one that covers at least min_echo_fraction
-  // of the beam profile (Gaussian, sigma a quarter of the footprint). A weak first pulse is lost
-  // behind the background's.
+  // pulsed time-of-flight receiver reports one that covers at least min_echo_fraction of the beam
+  // profile (Gaussian, sigma a quarter of the footprint): the first by default, or the strongest
+  // or the last (LidarConfig::echo_choice). A weak first pulse is lost behind the background's.
   const int n = c.footprint_rays;
   struct Return {
     double range_m, weight, energy;
@@ -141,6 +141,10 @@ Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_l
   }
   std::sort(returns.begin(), returns.begin() + n_returns,
             [](const Return& a, const Return& b) { return a.range_m < b.range_m; });
+  // The pulses that cover enough of the beam, nearest first; the receiver reports one of them
+  // (LidarConfig::echo_choice).
+  bool found = false;
+  double best_energy = 0.0;
   for (int begin = 0; begin < n_returns;) {
     int end = begin + 1;
     while (end < n_returns &&
@@ -153,14 +157,20 @@ Lidar::Echo Lidar::CastBeam(const World& world, const geometry::Pose2& T_world_l
       e += returns[k].energy;
       er += returns[k].energy * returns[k].range_m;
     }
-    if (w >= c.min_echo_fraction * w_total && e > 0.0) {
+    const bool takes = w >= c.min_echo_fraction * w_total && e > 0.0 &&
+                       (!found || c.echo_choice == EchoChoice::kLast ||
+                        (c.echo_choice == EchoChoice::kStrongest && e > best_energy));
+    if (takes) {
+      found = true;
+      best_energy = e;
       echo.range_m = er / e;
       echo.intensity = e / w_total;
       echo.mixed = returns[end - 1].range_m - returns[begin].range_m >= kDepthEdge_m;
-      return echo;
+      if (c.echo_choice == EchoChoice::kFirst) return echo;
     }
     begin = end;
   }
+  if (found) return echo;
   echo.range_m = kNaN;
   echo.intensity = 0.0;
   return echo;

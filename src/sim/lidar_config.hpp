@@ -6,6 +6,14 @@
 
 namespace shelfdock::sim {
 
+/// Which of a beam's separate pulses (returns farther apart than echo_separation_m) the receiver
+/// reports. Pulsed scanners commonly offer a choice (first, strongest or last echo).
+enum class EchoChoice {
+  kFirst,      ///< the nearest pulse covering min_echo_fraction of the beam (the default)
+  kStrongest,  ///< the pulse of most energy among those covering min_echo_fraction
+  kLast,       ///< the farthest pulse covering min_echo_fraction
+};
+
 /// A 2D LiDAR and its flaws. Defaults: the paper's VANJEE WLR-716 (270 deg, 1/3 deg steps =
 /// 811 beams, 15 Hz, 0.05-25 m). Each flaw has its own switch so tests can isolate it; the
 /// presets for other scanners are config/lidar_*.yaml.
@@ -31,7 +39,8 @@ struct LidarConfig {
 
   // Beam footprint: a beam is a cone, not a line. Where it straddles a depth edge closer than a
   // pulse length, the echo mixes foreground and background into a "trailing" point between them
-  // (paper 3.1, Eq. 1); farther apart, the receiver sees two pulses and reports the first.
+  // (paper 3.1, Eq. 1); farther apart, the receiver sees two pulses and reports one of them
+  // (echo_choice).
   bool enable_footprint = true;
   double beam_divergence_rad = 0.006;  ///< [rad] full cone angle
   double beam_aperture_m = 0.004;      ///< [m] beam width at the window
@@ -39,6 +48,8 @@ struct LidarConfig {
   double min_echo_fraction = 0.3;      ///< share of the footprint that must return an echo
   double echo_separation_m = 0.5;  ///< [m] returns farther apart are separate pulses (pulsed ToF:
                                    ///< about c * pulse width / 2); closer ones blend into one
+  EchoChoice echo_choice = EchoChoice::kFirst;  ///< which separate pulse is reported (YAML:
+                                                ///< first, strongest or last)
 
   // Dropouts: p = dropout_probability + dark_dropout_gain * (1 - reflectivity)
   //                + (shiny ? shiny_dropout_gain * sin^2(incidence) : 0).

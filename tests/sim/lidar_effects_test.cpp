@@ -20,16 +20,28 @@ int CountTrailing(const geometry::LaserScan& scan, double near_m, double far_m) 
   return n;
 }
 
+/// A 4 cm round post `post_m` straight ahead of the sensor, a wall across the view at `wall_m`.
+World PostBeforeWall(double post_m, double wall_m) {
+  World world;
+  world.AddRoundPost(Eigen::Vector2d(post_m, 0.0), 0.02);
+  world.AddWall({{wall_m, -20.0}, {wall_m, 20.0}});
+  return world;
+}
+
+/// An ideal LiDAR but for its 12 mrad footprint: wide enough that the post's edges straddle beams.
+LidarConfig WideFootprint() {
+  LidarConfig config = IdealLidarConfig();
+  config.enable_footprint = true;
+  config.beam_divergence_rad = 0.012;
+  return config;
+}
+
 TEST(LidarEffectsTest, FootprintMakesTrailingPointsAtDepthEdgesOnly) {
   // A 4 cm post 0.3 m ahead of a wall at 2.3 m: the post's two silhouette edges are depth edges
   // closer than a pulse length, so straddling beams blend both surfaces into trailing points.
   constexpr double kPost_m = 2.0, kWall_m = 2.3;
-  World world;
-  world.AddRoundPost(Eigen::Vector2d(kPost_m, 0.0), 0.02);
-  world.AddWall({{kWall_m, -20.0}, {kWall_m, 20.0}});
-  LidarConfig config = IdealLidarConfig();
-  config.enable_footprint = true;
-  config.beam_divergence_rad = 0.012;  // wide enough that both edges straddle a beam
+  const World world = PostBeforeWall(kPost_m, kWall_m);
+  const LidarConfig config = WideFootprint();
   ASSERT_GT(config.echo_separation_m, kWall_m - kPost_m);
   Lidar with(config, 1);
   Lidar without(IdealLidarConfig(), 1);
@@ -57,18 +69,51 @@ TEST(LidarEffectsTest, DistantBackgroundIsASeparatePulseNotATrailingPoint) {
   // straddling beam reads the post (the first pulse, when it covers enough of the beam) or the
   // wall, never a range in between.
   constexpr double kPost_m = 2.0, kWall_m = 6.0;
-  World world;
-  world.AddRoundPost(Eigen::Vector2d(kPost_m, 0.0), 0.02);
-  world.AddWall({{kWall_m, -20.0}, {kWall_m, 20.0}});
-  LidarConfig config = IdealLidarConfig();
-  config.enable_footprint = true;
-  config.beam_divergence_rad = 0.012;
+  const World world = PostBeforeWall(kPost_m, kWall_m);
+  const LidarConfig config = WideFootprint();
   ASSERT_LT(config.echo_separation_m, kWall_m - kPost_m);
   Lidar lidar(config, 1);
   const auto scan = lidar.Scan(world, Pose2());
   EXPECT_EQ(CountTrailing(scan, kPost_m - 0.02, kWall_m), 0);
   // The post is still seen: its centre beam reads its front face.
   EXPECT_NEAR(scan.ranges[scan.NearestBeam(0.0)], kPost_m - 0.02, 2e-3);
+}
+
+TEST(LidarEffectsTest, TheReceiverReportsTheFirstStrongestOrLastPulse) {
+  // The post 4 m ahead of the wall again: beams straddling its outline see two pulses. The
+  // default receiver reports the post's (first), a last-echo receiver the wall's on those
+  // beams, and a strongest-echo one the post's, nine times nearer and as bright (1 / r^2).
+  constexpr double kPost_m = 2.0, kWall_m = 6.0;
+  const World world = PostBeforeWall(kPost_m, kWall_m);
+  LidarConfig config = WideFootprint();
+  config.min_echo_fraction = 0.2;  // both pulses of an edge beam count
+  auto scan_with = [&](EchoChoice choice) {
+    LidarConfig c = config;
+    c.echo_choice = choice;
+    return Lidar(c, 1).Scan(world, Pose2());
+  };
+  const auto first = scan_with(EchoChoice::kFirst);
+  const auto last = scan_with(EchoChoice::kLast);
+  const auto strongest = scan_with(EchoChoice::kStrongest);
+  const std::size_t centre = first.NearestBeam(0.0);
+  int on_post = 0, post_to_wall = 0;
+  for (std::size_t i = centre - 6; i <= centre + 6; ++i) {
+    const bool post = std::abs(first.ranges[i] - kPost_m) < 0.03;
+    on_post += post;
+    // Every beam reads one surface or the other, never a range between them.
+    for (const auto* scan : {&first, &last, &strongest}) {
+      const double r = scan->ranges[i];
+      const double wall = kWall_m / std::cos(scan->BeamAngle(i));
+      EXPECT_TRUE(std::abs(r - kPost_m) < 0.03 || std::abs(r - wall) < 1e-3) << "beam " << i;
+    }
+    EXPECT_DOUBLE_EQ(strongest.ranges[i], first.ranges[i]) << "beam " << i;
+    if (post && std::abs(last.ranges[i] - kPost_m) >= 0.03) ++post_to_wall;
+  }
+  EXPECT_GE(on_post, 2);
+  // The outline's edge beams go to the wall for the last-echo receiver; its middle stays.
+  EXPECT_GE(post_to_wall, 1);
+  EXPECT_LT(post_to_wall, on_post);
+  EXPECT_NEAR(last.ranges[centre], kPost_m - 0.02, 2e-3);
 }
 
 TEST(LidarEffectsTest, MotionSkewMatchesSpeedTimesSweepTime) {

@@ -135,6 +135,18 @@ TEST(LidarConfigYamlTest, PresetsLoadAndBadKeysAreNamed) {
   }
   const std::string unknown = WriteTemp("lidar_unknown", "beams: 10\n");
   EXPECT_THROW(ReadLidarConfig(unknown), InputError);
+  // The receiver's echo choice: a name of the three, anything else named as the field.
+  EXPECT_EQ(ReadLidarConfig(WriteTemp("lidar_last", "echo_choice: last\n")).echo_choice,
+            sim::EchoChoice::kLast);
+  EXPECT_EQ(ReadLidarConfig(WriteTemp("lidar_strong", "echo_choice: strongest\n")).echo_choice,
+            sim::EchoChoice::kStrongest);
+  EXPECT_EQ(wlr.echo_choice, sim::EchoChoice::kFirst);
+  try {
+    ReadLidarConfig(WriteTemp("lidar_echo", "echo_choice: loudest\n"));
+    ADD_FAILURE() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "echo_choice");
+  }
 }
 
 // The sensor variants (config/lidar_variants, README "On a sensor unlike our model") keep the
@@ -150,7 +162,9 @@ TEST(LidarConfigYamlTest, SensorVariantsKeepTheGeometryAndChangeTheReturns) {
     EXPECT_EQ(v.num_beams, wlr.num_beams);
     EXPECT_DOUBLE_EQ(v.angle_min_rad, wlr.angle_min_rad);
     EXPECT_DOUBLE_EQ(v.angle_increment_rad, wlr.angle_increment_rad);
-    const bool differs = v.echo_separation_m != wlr.echo_separation_m ||
+    const bool differs = v.enable_footprint != wlr.enable_footprint ||
+                         v.echo_choice != wlr.echo_choice ||
+                         v.echo_separation_m != wlr.echo_separation_m ||
                          v.beam_divergence_rad != wlr.beam_divergence_rad ||
                          v.footprint_rays != wlr.footprint_rays ||
                          v.range_noise_sigma_m != wlr.range_noise_sigma_m ||
@@ -159,7 +173,7 @@ TEST(LidarConfigYamlTest, SensorVariantsKeepTheGeometryAndChangeTheReturns) {
     EXPECT_TRUE(differs);
     ++variants;
   }
-  EXPECT_GE(variants, 7);
+  EXPECT_GE(variants, 8);
 }
 
 }  // namespace
