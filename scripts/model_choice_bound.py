@@ -34,7 +34,7 @@ import numpy as np
 import yaml
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pose_bound import first_hit, leg_centres, outline  # noqa: E402  (one ray cast, one outline)
+from pose_bound import first_hit, leg_centres, outline, target_hits  # noqa: E402  (one ray cast)
 
 
 def sized(model, length, width):
@@ -70,22 +70,13 @@ def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edg
     t = truth["target"]
     pose = np.array([t["x"], t["y"], t["yaw"]])
     sigma = truth["noise_sigma_m"]
-    a0, da = scan["angle_min"], scan["angle_increment"]
+    da = scan["angle_increment"]
     ranges = scan["ranges"]
-    beams = []
-    beam_index = []
-    for i, r in enumerate(ranges):
-        if r is None or not math.isfinite(r):
-            continue
-        a = a0 + i * da
-        ux, uy = math.cos(a), math.sin(a)
-        hit = first_hit(ux, uy, model, pose)
-        if hit is not None and abs(r - hit[0]) <= hit_sigmas * sigma:
-            beams.append((ux, uy, hit[1]))
-            beam_index.append(i)
-    if not beams:
+    hits = target_hits(scan, truth, model, hit_sigmas)
+    if not hits:
         return None
-    hit_legs = {b[2] for b in beams}
+    beams = [(ux, uy, leg) for _, ux, uy, leg in hits]
+    hit_legs = {leg for _, _, _, leg in hits}
 
     def shows_edge(outer, neighbour):
         if neighbour < 0 or neighbour >= len(ranges):
@@ -94,11 +85,11 @@ def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edg
         return r is not None and math.isfinite(r) and r > ranges[outer] + hit_sigmas * sigma
 
     edge_weights = []
+    outward = 1 if da > 0 else -1  # beam index step toward higher bearings
     for k in sorted(hit_legs):
-        idx = [i for i, b in zip(beam_index, beams) if b[2] == k]
+        idx = [i for i, _, _, leg in hits if leg == k]
         low, high = (min(idx), max(idx)) if da > 0 else (max(idx), min(idx))
-        step = 1 if da > 0 else -1
-        for outer, neighbour in ((low, low - step), (high, high + step)):  # outline() order
+        for outer, neighbour in ((low, low - outward), (high, high + outward)):  # outline() order
             edge_weights.append(1.0 if not seen_edges or shows_edge(outer, neighbour) else 0.0)
     theta = np.array([*pose, model["length"], model["width"]])
     eps = 1e-6
@@ -118,7 +109,7 @@ def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edg
     edge_w = 1.0 / (edge_sigma_beams * da)**2 if edge_sigma_beams > 0 else 0.0
     weights = np.concatenate([np.full(len(beams), 1.0 / sigma**2),
                               edge_w * np.array(edge_weights)])
-    return jac.T @ (weights[:, None] * jac), len(hit_legs)
+    return jac.T @ (weights[:, None] * jac)
 
 
 def phi(x):
@@ -155,11 +146,10 @@ def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1
             continue
         model = models[target["model"]]
         scan = json.load(open(path.replace(".truth.json", ".scan.json")))
-        got = scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edges)
-        if got is None:
+        info = scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edges)
+        if info is None:
             skipped += 1
             continue
-        info, _ = got
         try:
             schur = info[3:, 3:] - info[3:, :3] @ np.linalg.solve(info[:3, :3], info[:3, 3:])
         except np.linalg.LinAlgError:

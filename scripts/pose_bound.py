@@ -93,36 +93,49 @@ def outline(centre, yaw, leg):
     return mid + min(rel), mid + max(rel)
 
 
-def scene_bound(scan, truth, model, hit_sigmas, outline_edges=True):
-    """Fisher information of the target's pose from its scan; None when no return hits its legs."""
+def target_hits(scan, truth, model, hit_sigmas):
+    """The scan's returns on the target's legs as they truly stand: (beam index, ux, uy, leg) for
+    each beam whose range lies within `hit_sigmas` range-noise sigmas of its first hit on a leg
+    (beams hidden by something nearer or blended are left out), in beam order."""
     t = truth["target"]
     pose = np.array([t["x"], t["y"], t["yaw"]])
     sigma = truth["noise_sigma_m"]
     a0, da = scan["angle_min"], scan["angle_increment"]
-    info = np.zeros((3, 3))
-    eps = np.array([1e-6, 1e-6, 1e-6])
-    legs_hit = set()
+    hits = []
     for i, r in enumerate(scan["ranges"]):
         if r is None or not math.isfinite(r):
             continue
         a = a0 + i * da
         ux, uy = math.cos(a), math.sin(a)
         hit = first_hit(ux, uy, model, pose)
-        if hit is None or abs(r - hit[0]) > hit_sigmas * sigma:
-            continue
+        if hit is not None and abs(r - hit[0]) <= hit_sigmas * sigma:
+            hits.append((i, ux, uy, hit[1]))
+    return hits
+
+
+def scene_bound(scan, truth, model, hit_sigmas, outline_edges=True):
+    """Fisher information of the target's pose from its scan; None when no return hits its legs."""
+    t = truth["target"]
+    pose = np.array([t["x"], t["y"], t["yaw"]])
+    sigma = truth["noise_sigma_m"]
+    da = scan["angle_increment"]
+    info = np.zeros((3, 3))
+    eps = np.array([1e-6, 1e-6, 1e-6])
+    legs_hit = set()
+    for _, ux, uy, leg in target_hits(scan, truth, model, hit_sigmas):
         grad = np.zeros(3)
         for k in range(3):
             step = np.zeros(3)
             step[k] = eps[k]
             up, down = first_hit(ux, uy, model, pose + step), first_hit(ux, uy, model, pose - step)
-            if up is None or down is None or up[1] != hit[1] or down[1] != hit[1]:
+            if up is None or down is None or up[1] != leg or down[1] != leg:
                 grad = None
                 break
             grad[k] = (up[0] - down[0]) / (2 * eps[k])
         if grad is None:
             continue
         info += np.outer(grad, grad) / sigma**2
-        legs_hit.add(hit[1])
+        legs_hit.add(leg)
     if not legs_hit:
         return None
     if not outline_edges:
