@@ -701,8 +701,9 @@ TEST(LayoutSceneTest, LegsBeforeAWallCountLessForThePose) {
 // A receiver that blends every echo of a beam however far apart (config/lidar_variants/
 // blend_any.yaml) returns a thin leg's edge beams between the leg and a background metres
 // behind, and the legs' ranges pull their shelf toward it. The detector tells such a sensor from
-// the scan's own depth steps (most of them bridged by one mixed return: BlendsAnyGap) and counts
-// those ranges less certain for the returned pose (shelf_fit.background_mix_any_*). eval-layouts
+// the scan's own depth steps (most of them bridged by one mixed return: EstimateEdgeBlending,
+// PreprocessOutput::blends_every_echo) and counts those ranges less certain for the returned pose
+// (shelf_fit.background_mix_any_cap_m). eval-layouts
 // --lidar config/lidar_variants/blend_any.yaml, seeds 1: aisle 297, mixed_neighbours 306,
 // round_noisy 237 and against_wall 186 returned their target first but 5.5-6.3 cm off, a
 // phantom; now each returns it first, within 5 cm, and nothing farther from a true shelf.
