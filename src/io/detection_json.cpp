@@ -64,6 +64,7 @@ nlohmann::json DetectionStatsToJson(const perception::DetectionStats& s) {
           {"range_noise_m", s.range_noise_m},
           {"depth_steps", s.depth_steps},
           {"bridged_steps", s.bridged_steps},
+          {"stray_returns", s.stray_returns},
           {"rejected",
            {{"fit", s.rejected.fit},
             {"model", s.rejected.model},

@@ -16,6 +16,8 @@ void ReadPreprocess(YamlFields f, perception::PreprocessConfig& c) {
   f.Read("leg_extent_noise_sigmas", c.leg_extent_noise_sigmas);
   f.Read("min_points", c.min_points);
   f.Read("min_point_fraction", c.min_point_fraction);
+  f.Read("lone_return_max_beams", c.lone_return_max_beams);
+  f.Read("lone_return_min_step_m", c.lone_return_min_step_m);
   f.Read("split_max_extra_m", c.split_max_extra_m);
   f.Read("split_min_step_m", c.split_min_step_m);
   f.Read("split_end_pieces", c.split_end_pieces);

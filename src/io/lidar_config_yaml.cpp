@@ -43,6 +43,7 @@ sim::LidarConfig ReadLidarConfig(const std::string& path) {
   f.Read("dropout_probability", c.dropout_probability);
   f.Read("dark_dropout_gain", c.dark_dropout_gain);
   f.Read("shiny_dropout_gain", c.shiny_dropout_gain);
+  f.Read("stray_probability", c.stray_probability);
   f.Read("enable_intensities", c.enable_intensities);
   f.Read("intensity_scale", c.intensity_scale);
   f.Read("intensity_noise_rel", c.intensity_noise_rel);

@@ -83,6 +83,8 @@ struct DetectionStats {
   double range_noise_m = 0.0;  ///< [m] range noise the scan shows (EstimateRangeNoise; 0: unknown)
   int depth_steps = 0;         ///< large depth steps with no return between (EstimateEdgeBlending)
   int bridged_steps = 0;       ///< large depth steps bridged by one mixed return
+  int stray_returns = 0;       ///< lone returns no leg could make at their range (stray echoes:
+                               ///< PreprocessConfig::lone_return_max_beams), not candidates
   RejectionCounts rejected;    ///< why hypotheses were not returned
 };
 

@@ -469,6 +469,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   stats.range_noise_m = pre.range_noise_m;
   stats.depth_steps = pre.edge_blending.steps;
   stats.bridged_steps = pre.edge_blending.bridged;
+  stats.stray_returns = pre.stray_returns;
   std::vector<Eigen::Vector2d> centres;
   centres.reserve(pre.candidates.size());
   // The points lie on a leg's near side, so its centroid sits short of its centre by about half

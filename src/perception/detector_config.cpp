@@ -30,6 +30,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           ">= 2 (a line on each side)");
   k.Check(p.min_point_fraction >= 0.0 && p.min_point_fraction <= 1.0,
           "preprocess.min_point_fraction", "in [0, 1]");
+  k.Check(p.lone_return_max_beams >= 0.0, "preprocess.lone_return_max_beams", ">= 0 (0: off)");
+  k.Check(p.lone_return_min_step_m >= 0.0, "preprocess.lone_return_min_step_m", ">= 0");
   k.Check(p.blend_probe_gap_m > 0.0, "preprocess.blend_probe_gap_m", "> 0");
   k.Check(p.blend_any_share >= 0.0 && p.blend_any_share <= 1.0, "preprocess.blend_any_share",
           "in [0, 1] (0: never)");

@@ -22,6 +22,11 @@ struct PreprocessConfig {
                                          ///< (times sqrt 2, a difference of two ranges), if more
   int min_points = 1;                    ///< [-] fewest points of a leg cluster at any range
   double min_point_fraction = 0.3;       ///< [-] of the beams expected across the smallest leg
+  double lone_return_max_beams = 2.5;    ///< [-] one return the beams on both sides passed by
+                                         ///< (its outline closed) is no leg where the smallest
+                                         ///< leg spans more beams than this; 0: off
+  double lone_return_min_step_m = 0.3;   ///< [m] ... and it stands this far in front of the
+                                         ///< surface both sides return from
   double split_max_extra_m = 0.25;    ///< [m] a cluster up to this much wider than a leg is split
                                       ///< at its strongest depth step (a leg with something
                                       ///< touching it); 0: never (end pieces: below)

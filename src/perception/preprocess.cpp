@@ -178,16 +178,39 @@ ProtrusionLimits SurfaceTestLimits(const PreprocessConfig& config, double range_
   return limits;
 }
 
+// Beams a leg of the models' narrowest section spans at `centroid`'s range.
+double BeamsAcrossSmallestLeg(const Eigen::Vector2d& centroid, double angle_increment_rad,
+                              const std::vector<geometry::ShelfModel>& models) {
+  double min_width = models.front().leg.width_m;
+  for (const auto& m : models) min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
+  const double spacing = std::max(centroid.norm() * std::abs(angle_increment_rad), 1e-6);
+  return min_width / spacing;
+}
+
+// True when the two beams on each side of `beam` returned from one surface there (each pair
+// within flat_m of each other): the background a lone return at `beam` stands in front of, seen
+// clean. A thin leg seen by a sensor that blends its edge beams with what stands behind has a
+// blend beside it, off the surface.
+bool OnSurfaceBothSides(const std::vector<ScanPoint>& points, int beam, double flat_m) {
+  const auto it = std::lower_bound(points.begin(), points.end(), beam,
+                                   [](const ScanPoint& p, int b) { return p.beam < b; });
+  if (it == points.end() || it->beam != beam) return false;
+  const auto k = static_cast<std::size_t>(it - points.begin());
+  auto flat = [&](std::size_t a, std::size_t b) {
+    return points[a].beam + 1 == points[b].beam &&
+           std::abs(points[a].range - points[b].range) < flat_m;
+  };
+  return k >= 2 && k + 2 < points.size() && flat(k - 2, k - 1) && flat(k + 1, k + 2) &&
+         points[k - 1].beam == beam - 1 && points[k + 1].beam == beam + 1;
+}
+
 bool FitsLegSize(const Eigen::Vector2d& centroid, double extent_m, std::size_t num_points,
                  double angle_increment_rad, const std::vector<geometry::ShelfModel>& models,
                  const PreprocessConfig& config, double max_extent_m) {
   if (num_points == 0 || models.empty() || extent_m > max_extent_m) return false;
-  double min_width = models.front().leg.width_m;
-  for (const auto& m : models) min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
   // Beams expected across the smallest leg at this range: a short-range cluster of one or two
   // points is noise or a mixed point, not a leg.
-  const double spacing = std::max(centroid.norm() * std::abs(angle_increment_rad), 1e-6);
-  const double expected = min_width / spacing;
+  const double expected = BeamsAcrossSmallestLeg(centroid, angle_increment_rad, models);
   const int needed = std::max(config.min_points,
                               static_cast<int>(std::floor(config.min_point_fraction * expected)));
   return static_cast<int>(num_points) >= needed;
@@ -260,6 +283,22 @@ PreprocessOutput Preprocess(const std::vector<ScanPoint>& points, double angle_i
     c.span = si;
     c.from_surface = from_surface;
     c.edges = FindSilhouetteEdges(points, c.points.front(), c.points.back(), split_step);
+    // One return whose neighbours on both sides passed by and returned from farther away marks
+    // something narrower than two beam spacings. Where the narrowest leg spans more beams than
+    // lone_return_max_beams, the beams beside would have hit such a leg too: the return is no
+    // leg but a stray echo (dust, another robot's LiDAR; config/lidar_variants/stray_echoes.yaml)
+    // or a thin thing no shelf stands on. Min_point_fraction cannot tell it: a leg peeking past an
+    // occluder, or one whose other returns dropped out, shows one return too, but not one with
+    // the background on both sides.
+    if (config.lone_return_max_beams > 0.0 && c.points.size() == 1 && c.edges.before_rad &&
+        c.edges.after_rad && c.edges.before_step_m.value_or(0.0) > config.lone_return_min_step_m &&
+        c.edges.after_step_m.value_or(0.0) > config.lone_return_min_step_m &&
+        OnSurfaceBothSides(points, c.points.front().beam, kFlat_m) &&
+        BeamsAcrossSmallestLeg(c.centroid, angle_increment_rad, models) >
+            config.lone_return_max_beams) {
+      ++out.stray_returns;
+      return false;
+    }
     out.candidates.push_back(std::move(c));
     return true;
   };

@@ -60,6 +60,7 @@ struct PreprocessOutput {
   /// return blends with what stands behind them.
   bool blends_every_echo = false;
   int split_candidates = 0;   ///< candidates cut from wider clusters at a depth step
+  int stray_returns = 0;      ///< lone returns too narrow for a leg at their range (stray echoes)
   int joined_candidates = 0;  ///< candidates joined from fragments of one leg (noise breaks)
 };
 

@@ -271,6 +271,18 @@ LabelledScan Lidar::ScanLabelled(const World& world, const PoseAt& T_world_lidar
     } else if (echo.centre.floor) {
       truth.kind = ObjectKind::kFloor;
     }
+    // A stray echo comes before the beam's own (the first echo is reported) or in its place.
+    // Drawn only when switched on, so that every other scan stays as it was.
+    if (c.stray_probability > 0.0 && uniform(rng_) < c.stray_probability) {
+      const double own =
+          std::isfinite(echo.range_m) ? std::min(echo.range_m, c.range_max_m) : c.range_max_m;
+      const double r = c.range_min_m + (own - c.range_min_m) * uniform(rng_);
+      scan.ranges[i] =
+          c.enable_quantisation ? std::round(r / c.quantisation_m) * c.quantisation_m : r;
+      truth.stray = true;
+      if (c.enable_intensities) scan.intensities[i] = 0.05 * c.intensity_scale * uniform(rng_);
+      continue;
+    }
     if (!std::isfinite(echo.range_m)) continue;
 
     if (c.enable_dropouts) {

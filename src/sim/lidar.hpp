@@ -19,6 +19,7 @@ struct BeamTruth {
   int part = 0;        ///< leg index for shelf legs and people's legs (as Primitive::part)
   double true_range_m = std::numeric_limits<double>::quiet_NaN();  ///< [m] centre ray, exact
   bool mixed = false;  ///< the footprint straddled a depth edge
+  bool stray = false;  ///< the range is a stray echo from nothing in the world
 };
 
 /// A simulated scan and, per beam, what it hit (for ground truth and tests).

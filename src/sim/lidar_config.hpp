@@ -58,6 +58,12 @@ struct LidarConfig {
   double dark_dropout_gain = 0.05;     ///< [-] extra on dark surfaces
   double shiny_dropout_gain = 0.3;     ///< [-] extra on specular surfaces at grazing incidence
 
+  // Stray echoes: with this probability a beam returns an echo from nothing in the world (dust,
+  // an insect, another robot's LiDAR pulse) instead of its own, at a range drawn uniformly
+  // between range_min_m and the beam's own range (range_max_m when it had none): the "short"
+  // and "random" readings of the beam model in Probabilistic Robotics (Thrun et al., 6.3).
+  double stray_probability = 0.0;  ///< [-] any beam; 0: off (no random draws)
+
   // Intensities: reflectivity * cos(incidence) * intensity_scale / max(range, 1 m)^2.
   bool enable_intensities = true;
   double intensity_scale = 1000.0;    ///< [-] sensor units for a white wall at 1 m
@@ -81,7 +87,8 @@ struct LidarConfig {
 /// field names).
 std::optional<geometry::ConfigViolation> FindConfigViolation(const LidarConfig& config);
 
-/// A config with every flaw switched off: exact ranges, no dropouts, no footprint, no tilt.
+/// A config with every flaw switched off: exact ranges, no dropouts, no stray echoes, no
+/// footprint, no tilt.
 LidarConfig IdealLidarConfig(LidarConfig config = {});
 
 }  // namespace shelfdock::sim

@@ -66,6 +66,15 @@ sim::LayoutConfig BlendAnyLayout() {
   return layout;
 }
 
+// Scenes drawn with the WLR-716 whose beams return a stray echo one time in a hundred
+// (config/lidar_variants/stray_echoes.yaml) as the only LiDAR.
+sim::LayoutConfig StrayEchoLayout() {
+  sim::LayoutConfig layout;
+  layout.lidars = {
+      {"stray_echoes", io::ReadLidarConfig(kRoot + "/config/lidar_variants/stray_echoes.yaml")}};
+  return layout;
+}
+
 // The sweep over `count` generated scenes of class `layout_class` from seed `seed0` (the issue's
 // radii).
 LayoutSweepConfig Scenes(sim::LayoutClass layout_class, std::uint64_t seed0, int count) {
@@ -153,6 +162,19 @@ std::vector<LayoutSceneResult> ExpectPhantomOnlyWithout(
 void ExpectMissed(const std::vector<LayoutSceneResult>& r) {
   ASSERT_EQ(r.size(), 1u);
   EXPECT_EQ(r[0].outcome, SceneOutcome::kMissed);
+}
+
+// One scene (drawn on `layout`) whose target the default detector returns first, within 5 cm
+// and with no phantom, and which a detector with `off` misses: the rule `off` turns off finds it.
+void ExpectFoundOnlyWith(const std::vector<geometry::ShelfModel>& models,
+                         const LayoutSweepConfig& config, const perception::DetectorConfig& off,
+                         const sim::LayoutConfig& layout) {
+  const auto with = RunSweep(models, config, {}, layout);
+  ASSERT_EQ(with.size(), 1u);
+  EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
+  EXPECT_EQ(with[0].phantoms, 0);
+  EXPECT_LT(with[0].centre_error_m, config.phantom_radius_m);
+  ExpectMissed(RunSweep(models, config, off, layout));
 }
 
 TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
@@ -742,15 +764,30 @@ TEST(LayoutSceneTest, LegsSeenByABlendingReceiverMayLookNarrower) {
       {sim::LayoutClass::kOpen, 43}, {sim::LayoutClass::kRow, 123}, {sim::LayoutClass::kAisle, 27}};
   for (const auto& [layout_class, seed] : scenes) {
     SCOPED_TRACE(seed);
-    const LayoutSweepConfig config = OneScene(layout_class, seed);
-    const auto with = RunSweep(models, config, {}, layout);
-    const auto without = RunSweep(models, config, off, layout);
-    ASSERT_EQ(with.size(), 1u);
-    ASSERT_EQ(without.size(), 1u);
-    EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
-    EXPECT_EQ(with[0].phantoms, 0);
-    EXPECT_LT(with[0].centre_error_m, config.phantom_radius_m);
-    ExpectMissed(without);
+    ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, layout);
+  }
+}
+
+// A stray echo (dust, another robot's LiDAR: config/lidar_variants/stray_echoes.yaml) inside a
+// shelf's footprint became a leg candidate, a leg of some leg set of the search, and so a foreign
+// leg inside the shelf that cost it its confidence; one in the gap beside a leg cut the leg's
+// outline. A lone return with the background clean on both sides where the narrowest leg would
+// span more than lone_return_max_beams beams is no candidate (PreprocessOutput::stray_returns).
+// eval-layouts --lidar config/lidar_variants/stray_echoes.yaml, seeds 1: large_close 20,
+// occluded_leg 88 and person_beside_leg 52 missed their target (below the minimum confidence); now
+// each returns it first, and nothing farther than 5 cm from a true shelf.
+TEST(LayoutSceneTest, AStrayEchoInsideAShelfIsNoForeignLeg) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  const sim::LayoutConfig layout = StrayEchoLayout();
+  perception::DetectorConfig off;
+  off.preprocess.lone_return_max_beams = 0.0;
+  const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
+      {sim::LayoutClass::kLargeClose, 20},
+      {sim::LayoutClass::kOccludedLeg, 88},
+      {sim::LayoutClass::kPersonBesideLeg, 52}};
+  for (const auto& [layout_class, seed] : scenes) {
+    SCOPED_TRACE(seed);
+    ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, layout);
   }
 }
 

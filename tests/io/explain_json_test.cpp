@@ -108,6 +108,9 @@ TEST(DetectionJson, StatsCarryTheRangeNoise) {
   stats.bridged_steps = 3;
   EXPECT_EQ(DetectionStatsToJson(stats)["depth_steps"].get<int>(), 17);
   EXPECT_EQ(DetectionStatsToJson(stats)["bridged_steps"].get<int>(), 3);
+  // And the lone returns no leg could make, dropped as stray echoes.
+  stats.stray_returns = 2;
+  EXPECT_EQ(DetectionStatsToJson(stats)["stray_returns"].get<int>(), 2);
 
   geometry::LaserScan empty = scan;
   empty.ranges.assign(empty.ranges.size(), std::numeric_limits<double>::quiet_NaN());

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -120,6 +122,42 @@ TEST(PreprocessTest, RoiAndSizeScreeningKeepOnlyLegsNearThePreset) {
   EXPECT_TRUE(Preprocess({}, kAlpha, std::nullopt, models, config).candidates.empty());
   const auto one = Preprocess({At(0, 3.0)}, kAlpha, std::nullopt, models, config);
   EXPECT_EQ(one.clusters, 1);
+}
+
+// A wall 3 m away across beams 0-60 and one return on beam 30 in front of it. The narrowest Table
+// 1 leg (26 mm round) spans 26 mm / (r * alpha) beams: 3.0 at r = 1.5 m, 1.1 at 4 m.
+//  - at 1.5 m with the wall clean on both sides, the beams beside would have hit any leg there
+//    too: a stray echo, no candidate (stray_returns 1); with lone_return_max_beams = 0 it is one;
+//  - at 4 m before a wall at 6 m a 26 mm leg is seen by one beam: a candidate;
+//  - 0.15 m in front of the wall (less than lone_return_min_step_m) a thin leg's edge beams blend
+//    into the surface close behind: a candidate;
+//  - with a return between it and the wall on the next beam (an edge beam's blend) it may be a
+//    leg whose edge beams blended with the wall: a candidate.
+TEST(PreprocessTest, ALoneReturnNoLegCouldMakeIsNoCandidate) {
+  const auto models = testing::PaperModels();
+  const PreprocessConfig config;
+  auto scan = [](double wall_m, double lone_m, std::optional<double> beside_m = std::nullopt) {
+    std::vector<ScanPoint> pts;
+    for (int b = 0; b <= 60; ++b) {
+      double r = b == 30 ? lone_m : wall_m;
+      if (b == 31 && beside_m) r = *beside_m;
+      pts.push_back(At(b, r));
+    }
+    return pts;
+  };
+  auto candidate_at = [&](const std::vector<ScanPoint>& pts, const PreprocessConfig& c) {
+    const auto out = Preprocess(pts, kAlpha, std::nullopt, models, c);
+    return std::make_pair(NearestCandidate(out, pts[30].p) < 1e-9, out.stray_returns);
+  };
+  const auto stray = candidate_at(scan(3.0, 1.5), config);
+  EXPECT_FALSE(stray.first);
+  EXPECT_EQ(stray.second, 1);
+  PreprocessConfig off = config;
+  off.lone_return_max_beams = 0.0;
+  EXPECT_TRUE(candidate_at(scan(3.0, 1.5), off).first);
+  EXPECT_TRUE(candidate_at(scan(6.0, 4.0), config).first);
+  EXPECT_TRUE(candidate_at(scan(1.65, 1.5), config).first);
+  EXPECT_TRUE(candidate_at(scan(3.0, 1.5, 2.2), config).first);
 }
 
 // A person's leg (a round post, r = 0.06 m) touching the side of a 40 mm square leg 2 m ahead

@@ -233,6 +233,61 @@ TEST(LidarEffectsTest, DarkSurfacesDropMoreBeams) {
   EXPECT_NEAR(static_cast<double>(bright_drops) / bright_n, 0.02, 0.01);
 }
 
+// Stray echoes (stray_probability 0.2): about a fifth of the beams, each flagged in the truth,
+// return short of what the beam saw, uniformly (mean halfway to the wall 4 m ahead, within 0.1 m),
+// and the beams that see nothing (behind the sensor) return strays short of range_max_m as
+// often. Switched off (the default, and IdealLidarConfig), no beam is a stray.
+TEST(LidarEffectsTest, StrayEchoesComeShortOfWhatTheBeamSaw) {
+  World world;
+  Wall wall;
+  wall.points = {{4.0, -20.0}, {4.0, 20.0}};
+  world.AddWall(wall);
+  LidarConfig config = IdealLidarConfig();
+  config.range_max_m = 10.0;
+  config.stray_probability = 0.2;
+  Lidar lidar(config, 11);
+  int wall_beams = 0, strays = 0, open_beams = 0, open_strays = 0;
+  double sum_fraction = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    const LabelledScan out = lidar.ScanLabelled(
+        world, [](double) { return Pose2(); }, 0.0);
+    for (std::size_t i = 0; i < out.scan.ranges.size(); ++i) {
+      const double angle = out.scan.BeamAngle(i);
+      if (std::abs(angle) > 2.0) {  // no wall there: nothing within range
+        ++open_beams;
+        if (out.truth[i].stray) {
+          ++open_strays;
+          EXPECT_LE(out.scan.ranges[i], config.range_max_m);
+        } else {
+          EXPECT_TRUE(std::isnan(out.scan.ranges[i]));
+        }
+        continue;
+      }
+      if (std::abs(angle) > 1.0) continue;  // the wall within range_max_m
+      ++wall_beams;
+      const double own = 4.0 / std::cos(angle);
+      if (!out.truth[i].stray) {
+        EXPECT_NEAR(out.scan.ranges[i], own, 1e-6);
+        continue;
+      }
+      ++strays;
+      EXPECT_GE(out.scan.ranges[i], config.range_min_m - 1e-9);
+      EXPECT_LE(out.scan.ranges[i], own + 1e-9);
+      sum_fraction += out.scan.ranges[i] / own;
+    }
+  }
+  EXPECT_NEAR(static_cast<double>(strays) / wall_beams, 0.2, 0.02);
+  EXPECT_NEAR(static_cast<double>(open_strays) / open_beams, 0.2, 0.03);
+  EXPECT_NEAR(sum_fraction / strays, 0.5, 0.05);
+
+  LidarConfig off = config;
+  off = IdealLidarConfig(off);
+  Lidar a(off, 3);
+  const LabelledScan clean = a.ScanLabelled(
+      world, [](double) { return Pose2(); }, 0.0);
+  for (const BeamTruth& t : clean.truth) EXPECT_FALSE(t.stray);
+}
+
 TEST(LidarEffectsTest, IntensityFollowsReflectivityAndRange) {
   World world;
   Wall bright;

@@ -151,7 +151,8 @@ TEST(LidarConfigYamlTest, PresetsLoadAndBadKeysAreNamed) {
 
 // The sensor variants (config/lidar_variants, README "On a sensor unlike our model") keep the
 // WLR-716's geometry and change only how returns are made: each must load and differ from the
-// WLR-716 in its beam, echo, noise or dropout model, or the robustness figures measure nothing.
+// WLR-716 in its beam, echo, noise, dropout or stray-echo model, or the robustness figures measure
+// nothing.
 TEST(LidarConfigYamlTest, SensorVariantsKeepTheGeometryAndChangeTheReturns) {
   const auto wlr = ReadLidarConfig(kRoot + "/config/lidar_wlr716.yaml");
   int variants = 0;
@@ -169,11 +170,12 @@ TEST(LidarConfigYamlTest, SensorVariantsKeepTheGeometryAndChangeTheReturns) {
                          v.footprint_rays != wlr.footprint_rays ||
                          v.range_noise_sigma_m != wlr.range_noise_sigma_m ||
                          v.range_noise_per_m != wlr.range_noise_per_m ||
-                         v.dropout_probability != wlr.dropout_probability;
+                         v.dropout_probability != wlr.dropout_probability ||
+                         v.stray_probability != wlr.stray_probability;
     EXPECT_TRUE(differs);
     ++variants;
   }
-  EXPECT_GE(variants, 8);
+  EXPECT_GE(variants, 11);
 }
 
 }  // namespace
