@@ -5,6 +5,7 @@
 
 #include "docking/collision_check.hpp"
 #include "docking/docker.hpp"
+#include "docking/obstacle_returns.hpp"
 #include "docking/path_planner.hpp"
 
 #include "docking/docker_detail.hpp"
@@ -68,9 +69,10 @@ FreeSpace ApproachFreeSpace(const DockingTask& task, const DockingConfig& config
   constexpr double kPointRadius_m = 0.02;
   const Pose2 T_map_lidar = obs.T_map_base_estimate * config.T_base_lidar;
   const geometry::LaserScan& scan = *obs.scan;
+  const std::vector<char> obstacle = ObstacleReturns(scan, config.safety.obstacle_neighbour_gap_m);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (!obstacle[i]) continue;
     const double r = scan.ranges[i];
-    if (!std::isfinite(r) || r < scan.range_min || r > scan.range_max) continue;
     const double a = scan.BeamAngle(i);
     const Eigen::Vector2d p_map = T_map_lidar * Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
     if (box.Contains(p_map)) continue;

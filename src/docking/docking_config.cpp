@@ -69,6 +69,7 @@ std::optional<ConfigViolation> FindConfigViolation(const SafetyConfig& c) {
   k.Check(NonNegative(c.obstacle_margin_m), "obstacle_margin_m", ">= 0");
   k.Check(Positive(c.obstacle_lookahead_m), "obstacle_lookahead_m", "> 0");
   k.Check(NonNegative(c.obstacle_wait_s), "obstacle_wait_s", ">= 0");
+  k.Check(NonNegative(c.obstacle_neighbour_gap_m), "obstacle_neighbour_gap_m", ">= 0 (0: off)");
   k.Check(NonNegative(c.leg_exclusion_m), "leg_exclusion_m", ">= 0");
   return k.Result();
 }

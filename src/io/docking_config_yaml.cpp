@@ -57,6 +57,7 @@ docking::DockingConfig ReadDockingConfig(const std::string& path) {
     f.Read("obstacle_margin_m", k.obstacle_margin_m);
     f.Read("obstacle_lookahead_m", k.obstacle_lookahead_m);
     f.Read("obstacle_wait_s", k.obstacle_wait_s);
+    f.Read("obstacle_neighbour_gap_m", k.obstacle_neighbour_gap_m);
     f.Read("leg_exclusion_m", k.leg_exclusion_m);
     f.RejectUnknown();
   }

@@ -90,6 +90,8 @@ const RuleCase kCases[] = {
     {"safety_lookahead", "safety.obstacle_lookahead_m",
      [](auto& c) { c.safety.obstacle_lookahead_m = 0.0; }},
     {"safety_wait", "safety.obstacle_wait_s", [](auto& c) { c.safety.obstacle_wait_s = -1.0; }},
+    {"safety_neighbour_gap", "safety.obstacle_neighbour_gap_m",
+     [](auto& c) { c.safety.obstacle_neighbour_gap_m = -0.1; }},
     {"safety_leg_exclusion", "safety.leg_exclusion_m",
      [](auto& c) { c.safety.leg_exclusion_m = -0.01; }},
     {"verify_frames", "verify.frames", [](auto& c) { c.verify.frames = 0; }},
