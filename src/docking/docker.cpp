@@ -133,6 +133,12 @@ Command Docker::Step(const Observations& obs) {
   if (!started_) Start(obs, &cmd);
   const double dt = std::max(obs.t_s - last_t_, 1e-4);
   tracker_.AddOdometryMotion(last_T_odom_base_, obs.T_odom_base);
+  if (obs.scan != nullptr) {
+    ScanReturns returns = PlaceReturns(*obs.scan, obs.T_odom_base * config_.T_base_lidar);
+    obstacle_returns_ =
+        ObstacleReturns(returns, scan_returns_, config_.safety.obstacle_neighbour_gap_m);
+    scan_returns_ = std::move(returns);
+  }
   if (phase_ != Phase::kDone && phase_ != Phase::kAbort && obs.t_s - t_start_ > config_.timeout_s) {
     Fail(OutcomeCode::kTimeout, "docking took longer than " + Fmt(config_.timeout_s, 0) + " s",
          &cmd);

@@ -11,6 +11,7 @@
 #include "docking/docking_config.hpp"
 #include "docking/fine_adjust.hpp"
 #include "docking/free_space.hpp"
+#include "docking/obstacle_returns.hpp"
 #include "docking/odometry_buffer.hpp"
 #include "docking/outcome.hpp"
 #include "docking/path_tracker.hpp"
@@ -215,6 +216,10 @@ class Docker {
   double last_t_ = 0.0;
   double last_v_cmd_ = 0.0;
   geometry::Pose2 last_T_odom_base_;
+  /// The latest scan's returns in the odometry frame and which of them may be obstacles
+  /// (ObstacleReturns, corroborated by a neighbouring beam or the scan before).
+  ScanReturns scan_returns_;
+  std::vector<char> obstacle_returns_;
 
   ApproachState approach_;
   DockState dock_;

@@ -5,7 +5,6 @@
 
 #include "docking/collision_check.hpp"
 #include "docking/docker.hpp"
-#include "docking/obstacle_returns.hpp"
 #include "docking/path_planner.hpp"
 
 #include "docking/docker_detail.hpp"
@@ -62,16 +61,15 @@ FreeSpace MapAwayFromTarget(const DockingTask& task, const TargetBox& box) {
 /// map is only as good as its presets), again except near the target, whose legs are placed
 /// from the preset and later from detections.
 FreeSpace ApproachFreeSpace(const DockingTask& task, const DockingConfig& config,
-                            const Observations& obs) {
+                            const Observations& obs, const std::vector<char>& obstacle) {
   const TargetBox box(task, config);
   FreeSpace space = MapAwayFromTarget(task, box);
   if (obs.scan == nullptr) return space;
   constexpr double kPointRadius_m = 0.02;
   const Pose2 T_map_lidar = obs.T_map_base_estimate * config.T_base_lidar;
   const geometry::LaserScan& scan = *obs.scan;
-  const std::vector<char> obstacle = ObstacleReturns(scan, config.safety.obstacle_neighbour_gap_m);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    if (!obstacle[i]) continue;
+    if (i >= obstacle.size() || !obstacle[i]) continue;
     const double r = scan.ranges[i];
     const double a = scan.BeamAngle(i);
     const Eigen::Vector2d p_map = T_map_lidar * Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
@@ -86,7 +84,7 @@ FreeSpace ApproachFreeSpace(const DockingTask& task, const DockingConfig& config
 void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
   // Plan on a fresh scan (one scan period at most), so neighbours are where they really stand.
   if (obs.scan == nullptr && obs.t_s - t_start_ < config_.scan_timeout_s) return;
-  approach_.free_space = ApproachFreeSpace(task_, config_, obs);
+  approach_.free_space = ApproachFreeSpace(task_, config_, obs, obstacle_returns_);
   if (!approach_.area) {
     const DockingAreaResult area = ChooseDockingArea(
         task_.T_map_shelf_preset, obs.T_map_base_estimate, approach_.free_space, config_);
@@ -166,7 +164,7 @@ void Docker::PlanApproachFrom(const Observations& obs, Command* cmd) {
 bool Docker::ApproachStillClear(const Observations& obs) const {
   // Each scan shows the obstacles near the way where they really stand (the map's presets may be
   // a few decimetres off): the rest of the path, and the turn at the entry, must keep clear.
-  FreeSpace space = ApproachFreeSpace(task_, config_, obs);
+  FreeSpace space = ApproachFreeSpace(task_, config_, obs, obstacle_returns_);
   const double margin = config_.safety.obstacle_margin_m;
   const ApproachPlan& plan = approach_.plan;
   if (approach_.step == ApproachState::Step::kFollow) {

@@ -7,7 +7,6 @@
 #include <string>
 
 #include "docking/collision_check.hpp"
-#include "docking/obstacle_returns.hpp"
 #include "docking/path_planner.hpp"
 #include "perception/known_legs.hpp"
 
@@ -73,12 +72,13 @@ void Docker::ProcessScan(const Observations& obs, bool recognise, Command* cmd) 
 
   // Safety first: unknown points (not the shelf's legs) on the path ahead stop the robot.
   if (follower_.has_path() && phase_ == Phase::kDock) {
-    const std::vector<char> obstacle =
-        ObstacleReturns(scan, config_.safety.obstacle_neighbour_gap_m);
     std::vector<Eigen::Vector2d> p_odom;
     p_odom.reserve(points.size());
     for (const auto& sp : points) {
-      if (obstacle[static_cast<std::size_t>(sp.beam)]) p_odom.push_back(T_odom_lidar * sp.p);
+      const auto beam = static_cast<std::size_t>(sp.beam);
+      if (beam < obstacle_returns_.size() && obstacle_returns_[beam]) {
+        p_odom.push_back(T_odom_lidar * sp.p);
+      }
     }
     const double s_now = follower_.path().Project(obs.T_odom_base).s;
     const double s_blocked =

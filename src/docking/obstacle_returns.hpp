@@ -2,16 +2,28 @@
 
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "geometry/laser_scan.hpp"
+#include "geometry/pose2.hpp"
 
 namespace shelfdock::docking {
 
-/// Which returns of `scan` may be obstacles (one flag per beam): a valid return that beam i - 1 or
-/// i + 1 corroborates with a point within `max_gap_m` of it. A real obstacle near the robot's way
-/// is hit by several beams (a 2 cm rod 1.7 m ahead by two of the WLR-716's, a person's leg by
-/// dozens); a return no neighbour confirms is a stray echo (dust, an insect, another robot's
-/// LiDAR pulse) and stops nothing. A thin thing seen by one beam only far off is seen by more as
-/// the robot nears it. `max_gap_m` <= 0: every valid return may be an obstacle.
-std::vector<char> ObstacleReturns(const geometry::LaserScan& scan, double max_gap_m);
+/// The valid returns of `scan` (one per beam; beams without one at the origin) placed in a frame
+/// by T_frame_lidar, with a flag per beam telling which are valid.
+struct ScanReturns {
+  std::vector<Eigen::Vector2d> points;  ///< [m] in the frame, one per beam
+  std::vector<char> valid;              ///< the beam returned within range
+};
+ScanReturns PlaceReturns(const geometry::LaserScan& scan, const geometry::Pose2& T_frame_lidar);
+
+/// Which returns of `scan` may be obstacles (one flag per beam): a valid return that something
+/// corroborates within `max_gap_m`, either a neighbouring beam's return (i - 1 or i + 1) or one of
+/// the previous scan's returns (`previous`, in the same frame as `now`). A real obstacle is hit
+/// by several beams (a person's leg by dozens), or by one beam scan after scan (a 26 mm leg 3 m
+/// off); a stray echo (dust, an insect, another robot's LiDAR pulse) is one return that the next
+/// scan does not repeat, and stops nothing. `max_gap_m` <= 0: every valid return may be one.
+std::vector<char> ObstacleReturns(const ScanReturns& now, const ScanReturns& previous,
+                                  double max_gap_m);
 
 }  // namespace shelfdock::docking

@@ -1,4 +1,4 @@
-// Which scan returns may stop the robot: those a neighbouring beam corroborates.
+// Which scan returns may stop the robot: those a neighbouring beam or the scan before corroborates.
 #include "docking/obstacle_returns.hpp"
 
 #include <cmath>
@@ -23,14 +23,20 @@ geometry::LaserScan WallScan() {
 // A stray echo 1 m ahead on beam 20 alone is no obstacle; the wall's returns beside it are (each
 // has a neighbour 12 mm away). A post 1 m ahead on beams 10-11 (5.8 mm apart) is one on both; so
 // is a return whose neighbour is missing on one side and corroborated on the other. A beam with
-// no return, or out of range, is none. With the gap 0 every valid return is one.
-TEST(ObstacleReturnsTest, AReturnNoNeighbourCorroboratesStopsNothing) {
+// no return, or out of range, is none. The stray seen again by the next scan within the gap (a
+// thin leg far off is hit by one beam scan after scan) is one. With the gap 0 every valid return
+// is one.
+TEST(ObstacleReturnsTest, AReturnNothingCorroboratesStopsNothing) {
   geometry::LaserScan scan = WallScan();
   scan.ranges[20] = 1.0;
   scan.ranges[10] = scan.ranges[11] = 1.0;
   scan.ranges[30] = std::numeric_limits<double>::quiet_NaN();
   scan.ranges[35] = 30.0;
-  const std::vector<char> obstacle = ObstacleReturns(scan, 0.15);
+  const geometry::Pose2 T_frame_lidar(0.5, -0.2, 0.1);
+  const ScanReturns now = PlaceReturns(scan, T_frame_lidar);
+  ASSERT_EQ(now.points.size(), scan.ranges.size());
+  EXPECT_NEAR((now.points[20] - T_frame_lidar.translation()).norm(), 1.0, 1e-12);
+  const std::vector<char> obstacle = ObstacleReturns(now, ScanReturns{}, 0.15);
   ASSERT_EQ(obstacle.size(), scan.ranges.size());
   EXPECT_FALSE(obstacle[20]);
   EXPECT_TRUE(obstacle[19]);
@@ -41,13 +47,19 @@ TEST(ObstacleReturnsTest, AReturnNoNeighbourCorroboratesStopsNothing) {
   EXPECT_TRUE(obstacle[31]);
   EXPECT_FALSE(obstacle[30]);
   EXPECT_FALSE(obstacle[35]);
-  const std::vector<char> all = ObstacleReturns(scan, 0.0);
+  // The next scan, the robot 5 cm farther along: the lone return is there again.
+  geometry::LaserScan next = scan;
+  next.ranges[20] = 0.95;
+  const ScanReturns again = PlaceReturns(next, T_frame_lidar * geometry::Pose2(0.05, 0.0, 0.0));
+  EXPECT_TRUE(ObstacleReturns(again, now, 0.15)[20]);
+  // ... or it was a stray, and the next one stands elsewhere.
+  next.ranges[20] = 1.6;
+  const ScanReturns elsewhere = PlaceReturns(next, T_frame_lidar);
+  EXPECT_FALSE(ObstacleReturns(elsewhere, now, 0.15)[20]);
+  const std::vector<char> all = ObstacleReturns(now, ScanReturns{}, 0.0);
   EXPECT_TRUE(all[20]);
   EXPECT_FALSE(all[30]);
   EXPECT_FALSE(all[35]);
-  // A lone return with no neighbours at all (a one-beam scan) is none either.
-  scan.ranges.assign(1, 1.0);
-  EXPECT_FALSE(ObstacleReturns(scan, 0.15)[0]);
 }
 
 }  // namespace
