@@ -21,7 +21,8 @@ ScanReturns PlaceReturns(const geometry::LaserScan& scan, const geometry::Pose2&
 
 std::vector<char> ObstacleReturns(const ScanReturns& now, const ScanReturns& previous,
                                   double max_gap_m) {
-  if (max_gap_m <= 0.0) return now.valid;
+  // Without a scan before (the first one) nothing tells a stray from a thin thing: all count.
+  if (max_gap_m <= 0.0 || previous.points.empty()) return now.valid;
   const std::size_t n = now.points.size();
   const double gap2 = max_gap_m * max_gap_m;
   auto near = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {

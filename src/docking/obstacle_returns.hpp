@@ -22,7 +22,8 @@ ScanReturns PlaceReturns(const geometry::LaserScan& scan, const geometry::Pose2&
 /// the previous scan's returns (`previous`, in the same frame as `now`). A real obstacle is hit
 /// by several beams (a person's leg by dozens), or by one beam scan after scan (a 26 mm leg 3 m
 /// off); a stray echo (dust, an insect, another robot's LiDAR pulse) is one return that the next
-/// scan does not repeat, and stops nothing. `max_gap_m` <= 0: every valid return may be one.
+/// scan does not repeat, and stops nothing. `max_gap_m` <= 0, or no scan before (`previous`
+/// empty): every valid return may be one.
 std::vector<char> ObstacleReturns(const ScanReturns& now, const ScanReturns& previous,
                                   double max_gap_m);
 
