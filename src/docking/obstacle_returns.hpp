@@ -9,12 +9,14 @@
 
 namespace shelfdock::docking {
 
-/// The valid returns of `scan` (one per beam; beams without one at the origin) placed in a frame
-/// by T_frame_lidar, with a flag per beam telling which are valid.
+/// A scan's returns in some frame, one per beam (beams without one at the origin).
 struct ScanReturns {
   std::vector<Eigen::Vector2d> points;  ///< [m] in the frame, one per beam
   std::vector<char> valid;              ///< the beam returned within range
 };
+
+/// The valid returns of `scan` placed in a frame by T_frame_lidar (PlaceReturns(scan, T_odom_lidar)
+/// puts them in the odometry frame), with a flag per beam telling which are valid.
 ScanReturns PlaceReturns(const geometry::LaserScan& scan, const geometry::Pose2& T_frame_lidar);
 
 /// Which returns of `scan` may be obstacles (one flag per beam): a valid return that something
