@@ -44,6 +44,7 @@ struct EvalLayoutsOptions {
   bool map_knows_model = false;
   int beams_in_sight = 0;        // 0: the generator's count
   std::vector<double> row_gaps;  // [m] min, max between footprints in rows; empty: the generator's
+  std::vector<double> as_built;  // [m], [rad] legs' build error and twist; empty: as designed
 };
 
 /// "lidar_tim571.yaml" -> "tim571".
@@ -124,6 +125,17 @@ int RunEvalLayouts(const EvalLayoutsOptions& opt) {
     }
     layout.row_min_gap_m = lo;
     layout.row_max_gap_m = hi;
+  }
+  if (!opt.as_built.empty()) {
+    // Beyond a few centimetres a leg stands elsewhere, beyond 45 degrees a square leg turns
+    // into itself: no build tolerance is that loose.
+    const double error = opt.as_built[0], twist = opt.as_built[1];
+    if (!(error >= 0.0 && error <= 0.05 && twist >= 0.0 && twist <= 0.785)) {
+      throw io::InputError(kCommandLine, "--as-built",
+                           "needs 0 <= ERROR <= 0.05 [m] and 0 <= TWIST <= 0.785 [rad]");
+    }
+    layout.leg_build_error_m = error;
+    layout.leg_build_twist_rad = twist;
   }
   const perception::Detector detector(models, detector_config);
 
@@ -211,6 +223,11 @@ void AddEvalLayoutsCommand(CLI::App& app, int* exit_code) {
                   "MIN MAX [m]: gaps between neighbouring footprints in rows and aisles, drawn "
                   "uniformly (default: the generator's 0.2 0.5); e.g. 0.05 1.2 puts some gaps as "
                   "wide as a shelf, where a phantom on two neighbours' legs fits a model")
+      ->expected(2);
+  cmd->add_option("--as-built", opt->as_built,
+                  "ERROR [m] TWIST [rad]: shelves as built, each leg's centre off its design "
+                  "place by up to ERROR along each shelf axis and turned by up to TWIST, the "
+                  "scene otherwise unchanged (default: as designed); e.g. 0.005 0.05")
       ->expected(2);
   cmd->add_option("--json", opt->json, "write the table and the failures as JSON");
   auto* dump =

@@ -256,6 +256,12 @@ std::string WriteLayoutFailure(const std::string& dir, const sim::LayoutScene& s
     nlohmann::json j = PoseJson(T_lidar_world * s.T_world_shelf);
     j["id"] = s.id;
     j["model"] = s.model.name;
+    if (!s.legs_as_built.empty()) {
+      // Each leg's offset and twist off its design place, shelf frame (eval-layouts --as-built).
+      nlohmann::json legs = nlohmann::json::array();
+      for (const auto& leg : s.legs_as_built) legs.push_back(PoseJson(leg));
+      j["legs_as_built"] = legs;
+    }
     shelves.push_back(j);
   }
   nlohmann::json target;

@@ -145,6 +145,10 @@ struct EvidenceConfig {
                                           ///< legs against the model (each leg's error over
                                           ///< what its returns allow) that halves the confidence
   double fit_chi2_four_legs = 12.0;       ///< [-] the same for four legs
+  double build_sigma_m = 0.0;             ///< [m] std of a real shelf's leg centres off its
+                                          ///< model's (welding, bent legs), added to each
+                                          ///< leg's own for the confidence's chi-square of a
+                                          ///< shelf the preset vouches for; 0: off
   double interior_scale_points = 4.0;     ///< [-] points inside the footprint that halve it
   double foreign_leg_points = 6.0;        ///< [-] a leg-sized cluster inside counts as this many
   double edge_band_m = 0.05;              ///< [m] a foreign leg this near an edge line of the

@@ -163,6 +163,32 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
   return out;
 }
 
+namespace {
+// Rows: the error along and across the leg's beam, each over its std.
+Eigen::Matrix2d InfoSqrt(const Eigen::Vector2d& leg, const LegSigma& sigma) {
+  const double norm = leg.norm();
+  const Eigen::Vector2d along =
+      norm > 1e-9 ? Eigen::Vector2d(leg / norm) : Eigen::Vector2d::UnitX();
+  const double w_along = 1.0 / sigma.along_m;
+  const double w_across = 1.0 / sigma.across_m;
+  Eigen::Matrix2d a;
+  a << w_along * along.x(), w_along * along.y(), -w_across * along.y(), w_across * along.x();
+  return a;
+}
+}  // namespace
+
+double LegsChiSquare(const std::array<Eigen::Vector2d, 4>& legs, int count,
+                     const geometry::ShelfModel& model, const std::array<int, 4>& corner_of_leg,
+                     const geometry::Pose2& T_lidar_shelf, const std::array<LegSigma, 4>& sigma) {
+  const auto corners = model.LegCentres();
+  double chi2 = 0.0;
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Vector2d e = legs[i] - T_lidar_shelf * corners[corner_of_leg[i]];
+    chi2 += (InfoSqrt(legs[i], sigma[i]) * e).squaredNorm();
+  }
+  return chi2;
+}
+
 ShelfRefineResult RefineShelfPose(const std::array<Eigen::Vector2d, 4>& legs, int count,
                                   const geometry::ShelfModel& model, const ShelfFitResult& fit,
                                   const std::array<LegSigma, 4>& sigma) {
@@ -172,13 +198,7 @@ ShelfRefineResult RefineShelfPose(const std::array<Eigen::Vector2d, 4>& legs, in
     cost.legs[i] = legs[i];
     cost.corners[i] = corners[fit.corner_of_leg[i]];
     cost.sqrt_w[i] = 1.0;
-    const double norm = legs[i].norm();
-    const Eigen::Vector2d along =
-        norm > 1e-9 ? Eigen::Vector2d(legs[i] / norm) : Eigen::Vector2d::UnitX();
-    const double w_along = 1.0 / sigma[i].along_m;
-    const double w_across = 1.0 / sigma[i].across_m;
-    cost.info_sqrt[i] << w_along * along.x(), w_along * along.y(), -w_across * along.y(),
-        w_across * along.x();
+    cost.info_sqrt[i] = InfoSqrt(legs[i], sigma[i]);
   }
   using AutoDiff = ceres::TinySolverAutoDiffFunction<CornerCost, 8, 3>;
   ceres::TinySolver<AutoDiff> solver;
@@ -190,11 +210,7 @@ ShelfRefineResult RefineShelfPose(const std::array<Eigen::Vector2d, 4>& legs, in
     x = Eigen::Vector3d(fit.T_lidar_shelf.x, fit.T_lidar_shelf.y, fit.T_lidar_shelf.yaw);
   }
   out.T_lidar_shelf = geometry::Pose2(x(0), x(1), geometry::WrapAngle(x(2)));
-  out.chi2 = 0.0;
-  for (int i = 0; i < count; ++i) {
-    const Eigen::Vector2d r = cost.info_sqrt[i] * (legs[i] - out.T_lidar_shelf * cost.corners[i]);
-    out.chi2 += r.squaredNorm();
-  }
+  out.chi2 = LegsChiSquare(legs, count, model, fit.corner_of_leg, out.T_lidar_shelf, sigma);
   return out;
 }
 

@@ -49,6 +49,13 @@ struct ShelfRefineResult {
   double chi2 = 0.0;  ///< sum over legs of (error along / along_m)^2 + (error across / across_m)^2
 };
 
+/// The chi-square of `count` legs against their model corners (`corner_of_leg` into
+/// model.LegCentres()) at T_lidar_shelf: each leg's error split along and across its beam and
+/// divided by sigma[i] (ShelfRefineResult::chi2).
+double LegsChiSquare(const std::array<Eigen::Vector2d, 4>& legs, int count,
+                     const geometry::ShelfModel& model, const std::array<int, 4>& corner_of_leg,
+                     const geometry::Pose2& T_lidar_shelf, const std::array<LegSigma, 4>& sigma);
+
 /// Refines `fit` (FitShelf's pose on the same legs, with its leg-to-corner pairing) to the pose
 /// that minimises the chi-square of the legs against their model corners, leg i's error split
 /// along and across its beam and divided by sigma[i]. FitShelf weighs the legs by range alone

@@ -1,6 +1,8 @@
 #include "sim/layout_generator.hpp"
 
 #include <cassert>
+#include <utility>
+#include <vector>
 
 #include "sim/layout_builder.hpp"
 #include "sim/layout_classes.hpp"
@@ -14,6 +16,30 @@ namespace {
 using layout::SceneRng;
 
 constexpr int kMaxAttempts = 1000;
+/// The as-built legs' stream: after every class's (the class's value) and apart from them.
+constexpr std::uint64_t kAsBuiltStream = 1000;
+
+/// Moves every shelf's legs off their design places (LayoutConfig::leg_build_error_m, _twist_rad)
+/// with draws of their own, so that the scene is otherwise its as-designed twin.
+void BuildLegsWithErrors(World& world, std::uint64_t seed, std::uint64_t stream,
+                         std::uint64_t attempt, const LayoutConfig& config) {
+  if (config.leg_build_error_m <= 0.0 && config.leg_build_twist_rad <= 0.0) return;
+  SceneRng rng(seed, kAsBuiltStream + stream, attempt);
+  const double e = config.leg_build_error_m;
+  const double t = config.leg_build_twist_rad;
+  std::vector<std::pair<int, std::vector<geometry::Pose2>>> built;
+  for (const ShelfInstance& shelf : world.shelves()) {
+    std::vector<geometry::Pose2> legs;
+    for (std::size_t i = 0; i < shelf.model.LegCentres().size(); ++i) {
+      const double dx = rng.Uniform(-e, e);
+      const double dy = rng.Uniform(-e, e);
+      const double twist = rng.Uniform(-t, t);
+      legs.emplace_back(dx, dy, twist);
+    }
+    built.emplace_back(shelf.id, std::move(legs));
+  }
+  for (auto& [id, legs] : built) world.SetLegsAsBuilt(id, std::move(legs));
+}
 
 /// The scene's sensor: a drawn LiDAR with the scene's range noise.
 NamedLidar DrawLidar(LayoutClass layout_class, SceneRng& rng, const LayoutConfig& config) {
@@ -91,6 +117,7 @@ LayoutScene GenerateLayoutScene(LayoutClass layout_class, std::uint64_t seed,
     scene.lidar = lidar.config;
     scene.scan_seed = rng.Bits();
     scene.world = builder.world();
+    BuildLegsWithErrors(scene.world, seed, stream, static_cast<std::uint64_t>(attempt), config);
     scene.T_world_preset = draft->T_world_preset;
     if (const auto target = scene.Target()) {
       scene.T_world_preset = layout::DrawPreset(rng, *target, config);

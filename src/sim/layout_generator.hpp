@@ -103,6 +103,12 @@ struct LayoutConfig {
   double leg_min_reflectivity = 0.08;  ///< [0..1] painted steel is dark
   double leg_max_reflectivity = 0.6;   ///< [0..1]
   double shiny_leg_share = 0.1;        ///< [-] galvanised (specular) legs
+  /// Shelves as built: each leg's centre off its design place by up to this along each of the
+  /// shelf's axes (uniform), and turned by up to leg_build_twist_rad. Drawn from a stream of
+  /// their own after the scene is placed, so a scene differs from its as-designed twin only in
+  /// its legs; 0 and 0: as designed, nothing drawn.
+  double leg_build_error_m = 0.0;    ///< [m]
+  double leg_build_twist_rad = 0.0;  ///< [rad]
 
   // Occluders (occluded_leg) and people.
   double occluder_min_gap_m = 0.2;        ///< [m] leg centre to the occluder's near face

@@ -68,6 +68,15 @@ bool World::SetShelfPose(int id, const geometry::Pose2& T_world_shelf) {
   return true;
 }
 
+bool World::SetLegsAsBuilt(int id, std::vector<geometry::Pose2> legs_as_built) {
+  auto it = std::find_if(shelves_.begin(), shelves_.end(),
+                         [id](const ShelfInstance& s) { return s.id == id; });
+  if (it == shelves_.end()) return false;
+  it->legs_as_built = std::move(legs_as_built);
+  Rebuild();
+  return true;
+}
+
 bool World::RemoveShelf(int id) {
   const auto n = shelves_.size();
   std::erase_if(shelves_, [id](const ShelfInstance& s) { return s.id == id; });

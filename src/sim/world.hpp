@@ -28,6 +28,9 @@ class World {
 
   /// Moves a shelf (e.g. carried by the robot after the lift). Returns false for unknown ids.
   bool SetShelfPose(int id, const geometry::Pose2& T_world_shelf);
+  /// Gives a shelf's legs their as-built places (ShelfInstance::legs_as_built). Returns false
+  /// for unknown ids.
+  bool SetLegsAsBuilt(int id, std::vector<geometry::Pose2> legs_as_built);
   /// Removes a shelf (e.g. lifted off the floor). Returns false for unknown ids.
   bool RemoveShelf(int id);
 

@@ -59,8 +59,12 @@ std::vector<LegFootprint> ShelfLegFootprints(const ShelfInstance& shelf) {
     leg.shelf_id = shelf.id;
     leg.leg_index = static_cast<int>(i);
     leg.shape = shelf.model.leg.shape;
-    const Eigen::Vector2d c = shelf.T_world_shelf * centres[i];
-    leg.T_world_leg = geometry::Pose2(c.x(), c.y(), shelf.T_world_shelf.yaw);
+    geometry::Pose2 T_shelf_leg(centres[i].x(), centres[i].y(), 0.0);
+    if (i < shelf.legs_as_built.size()) {
+      const geometry::Pose2& built = shelf.legs_as_built[i];
+      T_shelf_leg = geometry::Pose2(T_shelf_leg.x + built.x, T_shelf_leg.y + built.y, built.yaw);
+    }
+    leg.T_world_leg = shelf.T_world_shelf * T_shelf_leg;
     leg.length_m = shelf.model.leg.length_m;
     leg.width_m = shelf.model.leg.width_m;
     legs.push_back(leg);

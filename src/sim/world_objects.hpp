@@ -20,6 +20,10 @@ struct ShelfInstance {
   geometry::ShelfModel model;
   geometry::Pose2 T_world_shelf;
   Material leg_material{0.15, false};  ///< painted steel legs are dark: the paper's dropouts
+  /// As built: each leg's centre offset and twist from its design place, in the shelf frame,
+  /// indexed as geometry::ShelfModel::LegCentres(); empty: every leg where the model puts it.
+  /// A welded frame is a few millimetres off its drawing, and a leg may stand turned.
+  std::vector<geometry::Pose2> legs_as_built;
 };
 
 /// The true footprint of one shelf leg in the world frame, for clearance checks when docking.
@@ -27,7 +31,7 @@ struct LegFootprint {
   int shelf_id = 0;
   int leg_index = 0;  ///< as geometry::ShelfModel::LegCentres()
   geometry::LegShape shape = geometry::LegShape::kRectangle;
-  geometry::Pose2 T_world_leg;  ///< centre, yaw of the shelf
+  geometry::Pose2 T_world_leg;  ///< centre, yaw of the shelf plus the leg's twist as built
   double length_m = 0.0;        ///< [m] along the shelf's long side (diameter for round legs)
   double width_m = 0.0;         ///< [m]
 

@@ -91,6 +91,26 @@ def main():
     expect_bad_input(shelfdock, source, ["eval-layouts", "--row-gaps", "0.5", "0.2"], "--row-gaps")
     expect_bad_input(shelfdock, source, ["eval-layouts", "--row-gaps", "-1", "0.2"], "--row-gaps")
 
+    # --as-built: shelves off their drawings; the dump names each leg's offset and reproduces.
+    built = work / "layout_as_built"
+    shutil.rmtree(built, ignore_errors=True)
+    r = run(shelfdock, ["eval-layouts", "--scenes-per-class", "2", "--class", "open",
+                        "--as-built", "0.01", "0.05", "--dump-failures", str(built), "--dump-all"],
+            source)
+    assert r.returncode == 0, f"eval-layouts --as-built: exit {r.returncode}\n{r.stderr}"
+    truths = sorted(built.glob("*.truth.json"))
+    assert len(truths) == 2, f"{len(truths)} scenes dumped of 2"
+    for t in truths:
+        truth = json.loads(t.read_text())
+        legs = [leg for s in truth["shelves"] for leg in s["legs_as_built"]]
+        assert len(legs) == 4 * len(truth["shelves"]), truth["shelves"]
+        assert all(abs(leg["x"]) <= 0.01 and abs(leg["y"]) <= 0.01 and abs(leg["yaw"]) <= 0.05
+                   for leg in legs), legs
+        check_reproduction(shelfdock, source, t)
+    expect_bad_input(shelfdock, source, ["eval-layouts", "--as-built", "0.1", "0"], "--as-built")
+    expect_bad_input(shelfdock, source, ["eval-layouts", "--as-built", "0.005", "-1"],
+                     "--as-built")
+
     expect_bad_input(shelfdock, source, ["eval-layouts", "--class", "warehouse"], "--class")
     expect_bad_input(shelfdock, source, ["eval-layouts", "--scenes-per-class", "0"],
                      "--scenes-per-class")

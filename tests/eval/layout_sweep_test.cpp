@@ -164,17 +164,24 @@ void ExpectMissed(const std::vector<LayoutSceneResult>& r) {
   EXPECT_EQ(r[0].outcome, SceneOutcome::kMissed);
 }
 
-// One scene (drawn on `layout`) whose target the default detector returns first, within 5 cm
-// and with no phantom, and which a detector with `off` misses: the rule `off` turns off finds it.
+// One scene (drawn on `layout`) whose target a detector with `on` returns first, within 5 cm and
+// with no phantom, and which a detector with `off` misses.
 void ExpectFoundOnlyWith(const std::vector<geometry::ShelfModel>& models,
                          const LayoutSweepConfig& config, const perception::DetectorConfig& off,
-                         const sim::LayoutConfig& layout) {
-  const auto with = RunSweep(models, config, {}, layout);
+                         const sim::LayoutConfig& layout, const perception::DetectorConfig& on) {
+  const auto with = RunSweep(models, config, on, layout);
   ASSERT_EQ(with.size(), 1u);
   EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
   EXPECT_EQ(with[0].phantoms, 0);
   EXPECT_LT(with[0].centre_error_m, config.phantom_radius_m);
   ExpectMissed(RunSweep(models, config, off, layout));
+}
+
+// The same with the default detector as `on`: the rule `off` turns off finds the scene's target.
+void ExpectFoundOnlyWith(const std::vector<geometry::ShelfModel>& models,
+                         const LayoutSweepConfig& config, const perception::DetectorConfig& off,
+                         const sim::LayoutConfig& layout) {
+  ExpectFoundOnlyWith(models, config, off, layout, {});
 }
 
 TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
@@ -788,6 +795,31 @@ TEST(LayoutSceneTest, AStrayEchoInsideAShelfIsNoForeignLeg) {
   for (const auto& [layout_class, seed] : scenes) {
     SCOPED_TRACE(seed);
     ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, layout);
+  }
+}
+
+// A real shelf stands a few millimetres off its drawing (a welded frame, a bent leg). Near the
+// sensor, where many beams fix each leg to about a millimetre, legs 1 cm off the model halved the
+// confidence of the shelf the map names and lost it (eval-layouts --as-built 0.01 0.05: 74 of 102
+// misses below the minimum confidence). evidence.build_sigma_m widens each leg's std by the build
+// tolerance for the confidence of a shelf the preset vouches for. Scenes that the detector without
+// it misses: with 4 mm the target first within 5 cm of its design pose and no phantom. The
+// default stays 0 (README: with 3 mm, 4 more phantom scenes in 100000 as-designed ones).
+TEST(LayoutSceneTest, AShelfBuiltOffItsDrawingKeepsItsConfidence) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  sim::LayoutConfig layout = LayoutWithPresets();
+  layout.leg_build_error_m = 0.01;
+  layout.leg_build_twist_rad = 0.05;
+  perception::DetectorConfig on;
+  on.evidence.build_sigma_m = 0.004;
+  const perception::DetectorConfig off;  // the default: legs held to the drawing
+  const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
+      {sim::LayoutClass::kLargeClose, 135},
+      {sim::LayoutClass::kOccludedLeg, 15},
+      {sim::LayoutClass::kPersonBesideLeg, 113}};
+  for (const auto& [layout_class, seed] : scenes) {
+    SCOPED_TRACE(seed);
+    ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, layout, on);
   }
 }
 

@@ -43,6 +43,51 @@ TEST(LayoutGeneratorTest, SameSeedSameSceneAndScan) {
   }
 }
 
+// Shelves as built (LayoutConfig::leg_build_error_m, leg_build_twist_rad): every leg of every
+// shelf moved within the bounds in the shelf's frame and turned within the twist, the legs
+// drawn apart from the scene, so that the sensor, the shelves' poses, the preset and the scan's
+// seed are those of the as-designed twin.
+TEST(LayoutGeneratorTest, AsBuiltLegsMoveOnlyTheLegs) {
+  const auto models = PaperModels();
+  LayoutConfig built;
+  built.leg_build_error_m = 0.01;
+  built.leg_build_twist_rad = 0.05;
+  for (LayoutClass c : {LayoutClass::kOpen, LayoutClass::kAisle, LayoutClass::kLargeClose}) {
+    SCOPED_TRACE(std::string(LayoutClassName(c)));
+    const LayoutScene designed = GenerateLayoutScene(c, 5, models);
+    const LayoutScene scene = GenerateLayoutScene(c, 5, models, built);
+    EXPECT_EQ(scene.T_world_lidar.x, designed.T_world_lidar.x);
+    EXPECT_EQ(scene.T_world_lidar.yaw, designed.T_world_lidar.yaw);
+    EXPECT_EQ(scene.scan_seed, designed.scan_seed);
+    ASSERT_TRUE(scene.T_world_preset && designed.T_world_preset);
+    EXPECT_EQ(scene.T_world_preset->x, designed.T_world_preset->x);
+    ASSERT_EQ(scene.world.shelves().size(), designed.world.shelves().size());
+    double largest_m = 0.0;
+    for (std::size_t k = 0; k < scene.world.shelves().size(); ++k) {
+      const ShelfInstance& s = scene.world.shelves()[k];
+      const ShelfInstance& d = designed.world.shelves()[k];
+      EXPECT_EQ(s.T_world_shelf.x, d.T_world_shelf.x);
+      EXPECT_EQ(s.T_world_shelf.yaw, d.T_world_shelf.yaw);
+      EXPECT_TRUE(d.legs_as_built.empty());
+      ASSERT_EQ(s.legs_as_built.size(), 4u);
+      const auto legs = ShelfLegFootprints(s);
+      const auto design = ShelfLegFootprints(d);
+      for (std::size_t i = 0; i < legs.size(); ++i) {
+        // The offset read back in the shelf frame, where the bounds are drawn.
+        const Eigen::Vector2d off =
+            s.T_world_shelf.rotation().transpose() *
+            (legs[i].T_world_leg.translation() - design[i].T_world_leg.translation());
+        EXPECT_LE(std::abs(off.x()), built.leg_build_error_m + kEps);
+        EXPECT_LE(std::abs(off.y()), built.leg_build_error_m + kEps);
+        EXPECT_LE(std::abs(geometry::AngleDiff(legs[i].T_world_leg.yaw, s.T_world_shelf.yaw)),
+                  built.leg_build_twist_rad + kEps);
+        largest_m = std::max(largest_m, off.norm());
+      }
+    }
+    EXPECT_GT(largest_m, 0.2 * built.leg_build_error_m);  // the legs did move
+  }
+}
+
 TEST(LayoutGeneratorTest, ClassNamesRoundTrip) {
   for (LayoutClass c : kAllLayoutClasses) EXPECT_EQ(ParseLayoutClass(LayoutClassName(c)), c);
   EXPECT_FALSE(ParseLayoutClass("warehouse").has_value());

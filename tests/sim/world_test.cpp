@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -29,6 +30,40 @@ TEST(WorldTest, LegFootprintsAreTheModelsLegCentresInTheWorld) {
   // Rectangle legs become 4 segments each; the static grid holds them all.
   EXPECT_EQ(world.static_grid().primitives().size(), 16u);
   EXPECT_TRUE(world.LegFootprints(8).empty());
+}
+
+// A shelf as built: leg 1 stands 8 mm and -5 mm off its design place in the shelf's frame and
+// turned by 0.1 rad, the others where the model puts them; the ray-castable outline moves with it.
+TEST(WorldTest, LegsAsBuiltMoveAndTurnEachLeg) {
+  World world;
+  const geometry::Pose2 T_world_shelf(2.0, -1.0, 0.3);
+  world.AddShelf(7, shelfdock::testing::PaperShelf2(), T_world_shelf);
+  const auto design = world.LegFootprints(7);
+  const auto before = world.static_grid().primitives();
+  std::vector<geometry::Pose2> built(4);
+  built[1] = geometry::Pose2(0.008, -0.005, 0.1);
+  ASSERT_TRUE(world.SetLegsAsBuilt(7, built));
+  EXPECT_FALSE(world.SetLegsAsBuilt(8, built));
+  const auto legs = world.LegFootprints(7);
+  ASSERT_EQ(legs.size(), 4u);
+  const auto centres = shelfdock::testing::PaperShelf2().LegCentres();
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Eigen::Vector2d offset =
+        i == 1 ? Eigen::Vector2d(0.008, -0.005) : Eigen::Vector2d::Zero();
+    const Eigen::Vector2d expected = T_world_shelf * Eigen::Vector2d(centres[i] + offset);
+    EXPECT_NEAR((legs[i].T_world_leg.translation() - expected).norm(), 0.0, 1e-12);
+    EXPECT_NEAR(legs[i].T_world_leg.yaw, i == 1 ? 0.4 : 0.3, 1e-12);
+  }
+  // The grid holds the moved outline: leg 1's four segments changed, the others' did not.
+  const auto after = world.static_grid().primitives();
+  ASSERT_EQ(after.size(), before.size());
+  int moved = 0;
+  for (std::size_t k = 0; k < after.size(); ++k) {
+    if ((after[k].a - before[k].a).norm() > 1e-6) ++moved;
+  }
+  EXPECT_EQ(moved, 4);
+  EXPECT_NEAR((legs[0].T_world_leg.translation() - design[0].T_world_leg.translation()).norm(), 0.0,
+              1e-12);
 }
 
 TEST(WorldTest, MovingAndRemovingShelves) {
