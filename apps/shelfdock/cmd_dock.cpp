@@ -16,6 +16,7 @@
 #include "eval/docking_runner.hpp"
 #include "eval/monte_carlo.hpp"
 #include "eval/random_start.hpp"
+#include "io/detector_config_yaml.hpp"
 #include "io/docking_config_yaml.hpp"
 #include "io/html_page.hpp"
 #include "io/input_error.hpp"
@@ -37,6 +38,7 @@ struct DockOptions {
   std::string scenario = DefaultConfig("scenarios/paper_docking.yaml");
   std::string models = DefaultConfig("models.yaml");
   std::string config;
+  std::string params;
   std::string lidar;
   std::string robot;
   std::string method = "continuous";
@@ -59,6 +61,7 @@ docking::Method ParseMethod(const std::string& text) {
 eval::RunConfig MakeRunConfig(const DockOptions& opt) {
   eval::RunConfig config;
   if (!opt.config.empty()) config.docking = io::ReadDockingConfig(opt.config);
+  if (!opt.params.empty()) config.detector = io::ReadDetectorConfig(opt.params);
   if (!opt.lidar.empty()) config.lidar = io::ReadLidarConfig(opt.lidar);
   if (!opt.robot.empty()) config.robot = io::ReadRobotConfig(opt.robot);
   config.sensors.blackout_start_s = opt.blackout_s;
@@ -237,6 +240,8 @@ void AddCommonOptions(CLI::App* cmd, DockOptions* opt) {
   cmd->add_option("--scenario", opt->scenario, "scenario YAML")->capture_default_str();
   cmd->add_option("--models", opt->models, "shelf models YAML")->capture_default_str();
   cmd->add_option("--config", opt->config, "docking config YAML (e.g. config/docking.yaml)");
+  cmd->add_option("--params", opt->params,
+                  "detector parameters YAML (e.g. config/detector.yaml; default: its values)");
   cmd->add_option("--lidar", opt->lidar, "LiDAR config YAML (default: the WLR-716's defaults)");
   cmd->add_option("--robot", opt->robot, "robot config YAML (default: config/robot.yaml's values)");
   cmd->add_option("--target", opt->target, "dock under this shelf id instead of the scenario's");

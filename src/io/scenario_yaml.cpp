@@ -11,13 +11,12 @@ namespace shelfdock::io {
 namespace {
 constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 
-/// `{x, y, yaw}` under `key`: x and y required, yaw defaults to 0.
-geometry::Pose2 ReadPose(YamlFields& parent, const std::string& key) {
-  const YAML::Node node = parent.Child(key);
+/// The pose `{x, y, yaw}` of `node` at `where` in `file`: x and y required, yaw defaults to 0.
+geometry::Pose2 PoseAt(const YAML::Node& node, const std::string& file, const std::string& where) {
   if (!node.IsDefined() || node.IsNull()) {
-    throw InputError(parent.file(), parent.KeyPath(key), "required: a pose {x, y, yaw}");
+    throw InputError(file, where, "required: a pose {x, y, yaw}");
   }
-  YamlFields f(node, parent.file(), parent.KeyPath(key));
+  YamlFields f(node, file, where);
   double x = kUnset, y = kUnset, yaw = 0.0;
   f.Read("x", x);
   f.Read("y", y);
@@ -26,6 +25,26 @@ geometry::Pose2 ReadPose(YamlFields& parent, const std::string& key) {
   f.Require(std::isfinite(x), "x", "given (metres)");
   f.Require(std::isfinite(y), "y", "given (metres)");
   return {x, y, yaw};
+}
+
+/// `{x, y, yaw}` under `key` (PoseAt).
+geometry::Pose2 ReadPose(YamlFields& parent, const std::string& key) {
+  return PoseAt(parent.Child(key), parent.file(), parent.KeyPath(key));
+}
+
+/// `[{x, y, yaw}, ...]` under `key` (absent: empty), each as ReadPose.
+std::vector<geometry::Pose2> ReadPoses(YamlFields& parent, const std::string& key) {
+  const YAML::Node node = parent.Child(key);
+  if (!node.IsDefined() || node.IsNull()) return {};
+  const std::string where = parent.KeyPath(key);
+  if (!node.IsSequence() || node.size() > kMaxSceneObjects) {
+    throw InputError(parent.file(), where, "expected a list of poses {x, y, yaw}");
+  }
+  std::vector<geometry::Pose2> poses;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    poses.push_back(PoseAt(node[i], parent.file(), where + "[" + std::to_string(i) + "]"));
+  }
+  return poses;
 }
 
 /// `[[x, y], [x, y], ...]` under `key`, at least `min_points` of them.
@@ -132,6 +151,7 @@ sim::Scenario ReadScenario(const std::string& path,
     instance.T_world_shelf = shelf.T_map_shelf;
     f.Read("leg_reflectivity", instance.leg_material.reflectivity);
     f.Read("leg_shiny", instance.leg_material.shiny);
+    instance.legs_as_built = ReadPoses(f, "legs_as_built");
     f.Reject(sim::FindConfigViolation(instance));
     s.world.AddShelf(instance);
     s.shelves.push_back(shelf);

@@ -138,6 +138,16 @@ std::optional<geometry::ConfigViolation> FindConfigViolation(const ShelfInstance
   geometry::ConfigChecker k;  // id and pose: any; the model: checked with the models file
   const double r = shelf.leg_material.reflectivity;  // the file's `leg_reflectivity`
   k.Check(r >= 0.0 && r <= 1.0, "leg_reflectivity", "in [0, 1]");
+  // Off its drawing by a build tolerance, not standing somewhere else or turned into itself.
+  k.Check(
+      shelf.legs_as_built.empty() || shelf.legs_as_built.size() == shelf.model.LegCentres().size(),
+      "legs_as_built", "none, or one {x, y, yaw} per leg (4)");
+  for (const geometry::Pose2& leg : shelf.legs_as_built) {
+    k.Check(std::abs(leg.x) <= 0.05 && std::abs(leg.y) <= 0.05 && std::abs(leg.yaw) <= 0.785,
+            "legs_as_built",
+            "each leg within 0.05 m of its design place and 0.785 rad of the "
+            "shelf's heading");
+  }
   return k.Result();
 }
 

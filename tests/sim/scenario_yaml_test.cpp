@@ -64,6 +64,23 @@ TEST(ScenarioYamlTest, ShippedScenariosLoad) {
   const auto dock = ReadScenario(kRoot + "/config/scenarios/cluttered_dock.yaml", Models());
   EXPECT_EQ(dock.world.people().size(), 2u);
   EXPECT_EQ(dock.world.robots().size(), 1u);
+
+  // The paper's set-up with its shelf off its drawing: the same shelf, preset and start, each
+  // leg where the file puts it off the model's place.
+  const auto built =
+      ReadScenario(kRoot + "/config/scenarios/paper_docking_as_built.yaml", Models());
+  ASSERT_NE(built.FindShelf(2), nullptr);
+  EXPECT_EQ(built.FindShelf(2)->T_map_shelf.x, T_map_shelf.x);
+  EXPECT_EQ(built.T_map_robot_start.x, paper.T_map_robot_start.x);
+  const auto designed = paper.world.LegFootprints(2);
+  const auto legs = built.world.LegFootprints(2);
+  ASSERT_EQ(legs.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double off =
+        (legs[i].T_world_leg.translation() - designed[i].T_world_leg.translation()).norm();
+    EXPECT_GT(off, 0.005);
+    EXPECT_LT(off, 0.011);
+  }
 }
 
 TEST(ScenarioYamlTest, PresetOffsetDrawsWithinRangeAndRepeatsForASeed) {
@@ -113,6 +130,18 @@ TEST(ScenarioYamlTest, ErrorsNameTheFileAndKey) {
   ExpectScenarioError("target", kStart + "target_shelf: 9\n", "target_shelf");
   ExpectScenarioError("number", kStart + "boxes:\n  - {pose: {x: 0, y: 0}, length: wide}\n",
                       "boxes[0].length");
+  const std::string shelf =
+      kStart + "shelves:\n  - {id: 1, model: t1-rect-1075x883, pose: {x: 0, y: 0}, ";
+  ExpectScenarioError("built3",
+                      shelf + "legs_as_built: [{x: 0, y: 0}, {x: 0, y: 0}, {x: 0, y: 0}]}\n",
+                      "shelves[0].legs_as_built");
+  ExpectScenarioError("builtfar",
+                      shelf +
+                          "legs_as_built: [{x: 0.1, y: 0}, {x: 0, y: 0}, {x: 0, y: 0}, "
+                          "{x: 0, y: 0}]}\n",
+                      "shelves[0].legs_as_built");
+  ExpectScenarioError("builty", shelf + "legs_as_built: [{x: 0, y: 0}, {x: 0.01}]}\n",
+                      "shelves[0].legs_as_built[1].y");
   EXPECT_THROW(ReadScenario("/nonexistent/scenario.yaml", Models()), InputError);
 }
 
