@@ -44,6 +44,7 @@ sim::LidarConfig ReadLidarConfig(const std::string& path) {
   f.Read("dark_dropout_gain", c.dark_dropout_gain);
   f.Read("shiny_dropout_gain", c.shiny_dropout_gain);
   f.Read("stray_probability", c.stray_probability);
+  f.Read("range_bias_m", c.range_bias_m);
   f.Read("enable_intensities", c.enable_intensities);
   f.Read("intensity_scale", c.intensity_scale);
   f.Read("intensity_noise_rel", c.intensity_noise_rel);

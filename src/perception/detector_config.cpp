@@ -89,6 +89,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.fit_chi2_four_legs > 0.0, "evidence.fit_chi2_four_legs", "> 0");
   k.Check(e.build_sigma_m >= 0.0 && e.build_sigma_m <= 0.05, "evidence.build_sigma_m",
           "in [0, 0.05] (a leg farther off its model's place is no longer that model's)");
+  k.Check(e.range_bias_sigma_m >= 0.0 && e.range_bias_sigma_m <= 0.1, "evidence.range_bias_sigma_m",
+          "in [0, 0.1] (metres; 0: off)");
   k.Check(e.interior_scale_points > 0.0, "evidence.interior_scale_points", "> 0");
   k.Check(e.foreign_leg_points >= 0.0, "evidence.foreign_leg_points", ">= 0");
   k.Check(e.foreign_legs_excused >= 0, "evidence.foreign_legs_excused", ">= 0 (0: off)");

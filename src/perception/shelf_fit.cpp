@@ -24,6 +24,17 @@ namespace {
 // deviation from the paper's equal weights): a fitted leg centre is known to a fraction of a
 // beam step across the beam (its silhouette) but only to range noise / sqrt(beams on the leg)
 // along it, so equal weights let the range noise of the far legs into the heading.
+// Leg (lx, ly) against model corner k at the pose x = (x, y, yaw) (c, s: its cos and sin): the
+// error along and across the leg's beam over their std (A), into r[0], r[1].
+template <typename T>
+void LegResidual(const T& lx, const T& ly, const Eigen::Vector2d& k, const Eigen::Matrix2d& A,
+                 const T* x, const T& c, const T& s, T* r) {
+  const T ex = lx - (x[0] + c * T(k.x()) - s * T(k.y()));
+  const T ey = ly - (x[1] + s * T(k.x()) + c * T(k.y()));
+  r[0] = T(A(0, 0)) * ex + T(A(0, 1)) * ey;
+  r[1] = T(A(1, 0)) * ex + T(A(1, 1)) * ey;
+}
+
 struct CornerCost {
   // Zeroed: a 3-leg set leaves slot 3 unset, and its residual is 0 * (A * e) only while e is
   // finite (Eigen leaves vectors uninitialised; stack garbage there made the sanitizer build's
@@ -45,12 +56,10 @@ struct CornerCost {
     const T c = cos(x[2]);
     const T s = sin(x[2]);
     for (int i = 0; i < 4; ++i) {
-      const Eigen::Vector2d& k = corners[i];
-      const T ex = T(legs[i].x()) - (x[0] + c * T(k.x()) - s * T(k.y()));
-      const T ey = T(legs[i].y()) - (x[1] + s * T(k.x()) + c * T(k.y()));
-      const Eigen::Matrix2d& A = info_sqrt[i];
-      residual[2 * i] = T(sqrt_w[i]) * (T(A(0, 0)) * ex + T(A(0, 1)) * ey);
-      residual[2 * i + 1] = T(sqrt_w[i]) * (T(A(1, 0)) * ex + T(A(1, 1)) * ey);
+      T r[2];
+      LegResidual(T(legs[i].x()), T(legs[i].y()), corners[i], info_sqrt[i], x, c, s, r);
+      residual[2 * i] = T(sqrt_w[i]) * r[0];
+      residual[2 * i + 1] = T(sqrt_w[i]) * r[1];
     }
     return true;
   }
@@ -187,6 +196,71 @@ double LegsChiSquare(const std::array<Eigen::Vector2d, 4>& legs, int count,
     chi2 += (InfoSqrt(legs[i], sigma[i]) * e).squaredNorm();
   }
   return chi2;
+}
+
+namespace {
+// The legs against the model when every range may read long by one unknown b, the sensor's
+// systematic range error: residual_i = A_i (leg_i - b u_i - u(x, corner_i)) with u_i leg i's
+// beam direction, and b / sigma_b as a prior on the bias (a zero-mean guess of that spread).
+// From legs at one bearing b is a shift along the beams that the pose takes up; from legs all
+// around the sensor (under a shelf) it is the shelf looking 2b larger than its model.
+struct BiasedCornerCost {
+  std::array<Eigen::Vector2d, 4> legs{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                                      Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  std::array<Eigen::Vector2d, 4> corners{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                                         Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  std::array<Eigen::Vector2d, 4> rays{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                                      Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  std::array<Eigen::Matrix2d, 4> info_sqrt{Eigen::Matrix2d::Zero(), Eigen::Matrix2d::Zero(),
+                                           Eigen::Matrix2d::Zero(), Eigen::Matrix2d::Zero()};
+  double inv_sigma_b = 0.0;
+  template <typename T>
+  bool operator()(const T* x, T* residual) const {
+    using std::cos;
+    using std::sin;
+    const T c = cos(x[2]);
+    const T s = sin(x[2]);
+    for (int i = 0; i < 4; ++i) {
+      LegResidual(T(legs[i].x()) - x[3] * T(rays[i].x()), T(legs[i].y()) - x[3] * T(rays[i].y()),
+                  corners[i], info_sqrt[i], x, c, s, residual + 2 * i);
+    }
+    residual[8] = T(inv_sigma_b) * x[3];
+    return true;
+  }
+};
+}  // namespace
+
+RangeBiasFit FitWithRangeBias(const std::array<Eigen::Vector2d, 4>& legs, int count,
+                              const geometry::ShelfModel& model,
+                              const std::array<int, 4>& corner_of_leg,
+                              const geometry::Pose2& T_lidar_shelf,
+                              const std::array<LegSigma, 4>& sigma, double bias_sigma_m) {
+  const auto corners = model.LegCentres();
+  BiasedCornerCost cost;  // unused legs keep zero weight
+  for (int i = 0; i < count; ++i) {
+    cost.legs[i] = legs[i];
+    cost.corners[i] = corners[corner_of_leg[i]];
+    const double norm = legs[i].norm();
+    cost.rays[i] = norm > 1e-9 ? Eigen::Vector2d(legs[i] / norm) : Eigen::Vector2d::UnitX();
+    cost.info_sqrt[i] = InfoSqrt(legs[i], sigma[i]);
+  }
+  cost.inv_sigma_b = 1.0 / bias_sigma_m;
+  using AutoDiff = ceres::TinySolverAutoDiffFunction<BiasedCornerCost, 9, 4>;
+  ceres::TinySolver<AutoDiff> solver;
+  Eigen::Vector4d x(T_lidar_shelf.x, T_lidar_shelf.y, T_lidar_shelf.yaw, 0.0);
+  const AutoDiff function(cost);
+  solver.Solve(function, &x);
+  RangeBiasFit out;
+  if (!x.allFinite()) {  // the pose as given, no bias
+    out.chi2 = LegsChiSquare(legs, count, model, corner_of_leg, T_lidar_shelf, sigma);
+    return out;
+  }
+  Eigen::Matrix<double, 9, 1> r;
+  function(x.data(), r.data(), nullptr);
+  out.chi2 = r.squaredNorm();
+  out.bias_m = x(3);
+  out.T_lidar_shelf = geometry::Pose2(x(0), x(1), geometry::WrapAngle(x(2)));
+  return out;
 }
 
 ShelfRefineResult RefineShelfPose(const std::array<Eigen::Vector2d, 4>& legs, int count,

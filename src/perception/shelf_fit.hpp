@@ -56,6 +56,22 @@ double LegsChiSquare(const std::array<Eigen::Vector2d, 4>& legs, int count,
                      const geometry::ShelfModel& model, const std::array<int, 4>& corner_of_leg,
                      const geometry::Pose2& T_lidar_shelf, const std::array<LegSigma, 4>& sigma);
 
+/// The legs' best fit to the model when every range may read long by one unknown bias.
+struct RangeBiasFit {
+  geometry::Pose2 T_lidar_shelf;
+  double bias_m = 0.0;  ///< [m] what the ranges read too long by
+  double chi2 = 0.0;    ///< LegsChiSquare of the legs moved back by the bias, plus (bias/sigma)^2
+};
+
+/// Fits the pose and a range bias shared by every leg (its prior zero-mean with std
+/// bias_sigma_m > 0) from T_lidar_shelf and no bias: legs all around the sensor look larger than
+/// their model by twice a bias, legs at one bearing only shifted along it. Ceres' TinySolver.
+RangeBiasFit FitWithRangeBias(const std::array<Eigen::Vector2d, 4>& legs, int count,
+                              const geometry::ShelfModel& model,
+                              const std::array<int, 4>& corner_of_leg,
+                              const geometry::Pose2& T_lidar_shelf,
+                              const std::array<LegSigma, 4>& sigma, double bias_sigma_m);
+
 /// Refines `fit` (FitShelf's pose on the same legs, with its leg-to-corner pairing) to the pose
 /// that minimises the chi-square of the legs against their model corners, leg i's error split
 /// along and across its beam and divided by sigma[i]. FitShelf weighs the legs by range alone

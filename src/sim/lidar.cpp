@@ -291,7 +291,7 @@ LabelledScan Lidar::ScanLabelled(const World& world, const PoseAt& T_world_lidar
       if (s.shiny) p += c.shiny_dropout_gain * (1.0 - s.cos_incidence * s.cos_incidence);
       if (uniform(rng_) < p) continue;
     }
-    double r = echo.range_m;
+    double r = echo.range_m + c.range_bias_m;
     if (c.enable_range_noise) {
       r += (c.range_noise_sigma_m + c.range_noise_per_m * r) * gauss(rng_);
     }

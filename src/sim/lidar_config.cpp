@@ -37,6 +37,7 @@ std::optional<geometry::ConfigViolation> FindConfigViolation(const LidarConfig& 
   k.Check(InUnitRange(c.dark_dropout_gain), "dark_dropout_gain", "in [0, 1]");
   k.Check(InUnitRange(c.shiny_dropout_gain), "shiny_dropout_gain", "in [0, 1]");
   k.Check(InUnitRange(c.stray_probability), "stray_probability", "in [0, 1]");
+  k.Check(std::abs(c.range_bias_m) <= 0.5, "range_bias_m", "within +-0.5 (metres)");
   k.Check(c.intensity_scale >= 0.0, "intensity_scale", ">= 0");
   k.Check(c.intensity_noise_rel >= 0.0, "intensity_noise_rel", ">= 0");
   k.Check(c.mount_height_m > 0.0, "mount_height_m", "> 0");
@@ -53,6 +54,7 @@ LidarConfig IdealLidarConfig(LidarConfig config) {
   config.enable_footprint = false;
   config.enable_dropouts = false;
   config.stray_probability = 0.0;
+  config.range_bias_m = 0.0;
   config.enable_tilt = false;
   config.yaw_offset_rad = 0.0;
   return config;

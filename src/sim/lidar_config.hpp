@@ -58,6 +58,11 @@ struct LidarConfig {
   double dark_dropout_gain = 0.05;     ///< [-] extra on dark surfaces
   double shiny_dropout_gain = 0.3;     ///< [-] extra on specular surfaces at grazing incidence
 
+  // Systematic range error: every return this much longer than the beam's echo (a calibration
+  // offset; datasheets give it apart from the noise, e.g. +-40 mm for the UST-10LX, +-60 mm for
+  // the TiM571 over their whole range of targets and temperatures).
+  double range_bias_m = 0.0;  ///< [m] added to every return; 0: none
+
   // Stray echoes: with this probability a beam returns an echo from nothing in the world (dust,
   // an insect, another robot's LiDAR pulse) instead of its own, at a range drawn uniformly
   // between range_min_m and the beam's own range (range_max_m when it had none): the "short"

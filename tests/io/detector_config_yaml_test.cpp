@@ -59,6 +59,7 @@ TEST(DetectorConfigYamlTest, ShippedFileHoldsTheStructDefaults) {
   EXPECT_EQ(read.evidence.fit_chi2_three_legs, def.evidence.fit_chi2_three_legs);
   EXPECT_EQ(read.evidence.fit_chi2_four_legs, def.evidence.fit_chi2_four_legs);
   EXPECT_EQ(read.evidence.build_sigma_m, def.evidence.build_sigma_m);
+  EXPECT_EQ(read.evidence.range_bias_sigma_m, def.evidence.range_bias_sigma_m);
 }
 
 TEST(DetectorConfigYamlTest, ReadsGivenKeysAndKeepsDefaultsForTheRest) {

@@ -2,6 +2,8 @@
 // config pass, and breaking exactly one rule is reported with exactly its key.
 #include "sim/lidar_config.hpp"
 
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "../common/config_rules.hpp"
@@ -42,6 +44,9 @@ const LidarRule kRules[] = {
     {"shiny_dropout_above_one", "shiny_dropout_gain", [](auto& c) { c.shiny_dropout_gain = 1.1; }},
     {"stray_negative", "stray_probability", [](auto& c) { c.stray_probability = -0.01; }},
     {"stray_above_one", "stray_probability", [](auto& c) { c.stray_probability = 1.5; }},
+    {"range_bias_beyond_half_a_metre", "range_bias_m", [](auto& c) { c.range_bias_m = -0.6; }},
+    {"range_bias_nan", "range_bias_m",
+     [](auto& c) { c.range_bias_m = std::numeric_limits<double>::quiet_NaN(); }},
     {"intensity_scale", "intensity_scale", [](auto& c) { c.intensity_scale = -1.0; }},
     {"intensity_noise", "intensity_noise_rel", [](auto& c) { c.intensity_noise_rel = -0.01; }},
     {"mount_height", "mount_height_m", [](auto& c) { c.mount_height_m = 0.0; }},

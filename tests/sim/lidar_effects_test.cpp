@@ -288,6 +288,37 @@ TEST(LidarEffectsTest, StrayEchoesComeShortOfWhatTheBeamSaw) {
   for (const BeamTruth& t : clean.truth) EXPECT_FALSE(t.stray);
 }
 
+// A systematic range error (LidarConfig::range_bias_m): every return on a wall 3 m ahead reads
+// the true range plus the bias, either sign, and the truth keeps the true range.
+TEST(LidarEffectsTest, ARangeBiasMovesEveryReturnAlongItsBeam) {
+  World world;
+  Wall wall;
+  wall.points = {{3.0, -10.0}, {3.0, 10.0}};
+  world.AddWall(wall);
+  for (const double bias : {0.02, -0.015}) {
+    SCOPED_TRACE(bias);
+    LidarConfig config = IdealLidarConfig();
+    config.range_bias_m = bias;
+    Lidar lidar(config, 5);
+    const LabelledScan out = lidar.ScanLabelled(
+        world, [](double) { return Pose2(); }, 0.0);
+    int wall_beams = 0;
+    for (std::size_t i = 0; i < out.scan.ranges.size(); ++i) {
+      const double angle = out.scan.BeamAngle(i);
+      if (std::abs(angle) > 1.0) continue;
+      ++wall_beams;
+      const double own = 3.0 / std::cos(angle);
+      EXPECT_NEAR(out.scan.ranges[i], own + bias, 1e-6);
+      EXPECT_NEAR(out.truth[i].true_range_m, own, 1e-6);
+    }
+    EXPECT_GT(wall_beams, 300);
+  }
+  // IdealLidarConfig switches it off.
+  LidarConfig biased;
+  biased.range_bias_m = 0.02;
+  EXPECT_EQ(IdealLidarConfig(biased).range_bias_m, 0.0);
+}
+
 TEST(LidarEffectsTest, IntensityFollowsReflectivityAndRange) {
   World world;
   Wall bright;

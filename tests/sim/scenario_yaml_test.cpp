@@ -180,8 +180,8 @@ TEST(LidarConfigYamlTest, PresetsLoadAndBadKeysAreNamed) {
 
 // The sensor variants (config/lidar_variants, README "On a sensor unlike our model") keep the
 // WLR-716's geometry and change only how returns are made: each must load and differ from the
-// WLR-716 in its beam, echo, noise, dropout or stray-echo model, or the robustness figures measure
-// nothing.
+// WLR-716 in its beam, echo, noise, dropout, stray-echo or range-bias model, or the robustness
+// figures measure nothing.
 TEST(LidarConfigYamlTest, SensorVariantsKeepTheGeometryAndChangeTheReturns) {
   const auto wlr = ReadLidarConfig(kRoot + "/config/lidar_wlr716.yaml");
   int variants = 0;
@@ -192,19 +192,19 @@ TEST(LidarConfigYamlTest, SensorVariantsKeepTheGeometryAndChangeTheReturns) {
     EXPECT_EQ(v.num_beams, wlr.num_beams);
     EXPECT_DOUBLE_EQ(v.angle_min_rad, wlr.angle_min_rad);
     EXPECT_DOUBLE_EQ(v.angle_increment_rad, wlr.angle_increment_rad);
-    const bool differs = v.enable_footprint != wlr.enable_footprint ||
-                         v.echo_choice != wlr.echo_choice ||
-                         v.echo_separation_m != wlr.echo_separation_m ||
-                         v.beam_divergence_rad != wlr.beam_divergence_rad ||
-                         v.footprint_rays != wlr.footprint_rays ||
-                         v.range_noise_sigma_m != wlr.range_noise_sigma_m ||
-                         v.range_noise_per_m != wlr.range_noise_per_m ||
-                         v.dropout_probability != wlr.dropout_probability ||
-                         v.stray_probability != wlr.stray_probability;
+    const bool differs =
+        v.enable_footprint != wlr.enable_footprint || v.echo_choice != wlr.echo_choice ||
+        v.echo_separation_m != wlr.echo_separation_m ||
+        v.beam_divergence_rad != wlr.beam_divergence_rad ||
+        v.footprint_rays != wlr.footprint_rays ||
+        v.range_noise_sigma_m != wlr.range_noise_sigma_m ||
+        v.range_noise_per_m != wlr.range_noise_per_m ||
+        v.dropout_probability != wlr.dropout_probability ||
+        v.stray_probability != wlr.stray_probability || v.range_bias_m != wlr.range_bias_m;
     EXPECT_TRUE(differs);
     ++variants;
   }
-  EXPECT_GE(variants, 11);
+  EXPECT_GE(variants, 12);
 }
 
 }  // namespace
