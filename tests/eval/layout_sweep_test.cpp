@@ -804,7 +804,7 @@ TEST(LayoutSceneTest, AStrayEchoInsideAShelfIsNoForeignLeg) {
 // misses below the minimum confidence). evidence.build_sigma_m widens each leg's std by the build
 // tolerance for the confidence of a shelf the preset vouches for. Scenes that the detector without
 // it misses: with 4 mm the target first within 5 cm of its design pose and no phantom. The
-// default stays 0 (README: with 3 mm, 4 more phantom scenes in 100000 as-designed ones).
+// default stays 0 (README: with 3 mm, 5 more phantom scenes in 100000 as-designed ones).
 TEST(LayoutSceneTest, AShelfBuiltOffItsDrawingKeepsItsConfidence) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   sim::LayoutConfig layout = LayoutWithPresets();
