@@ -171,16 +171,16 @@ std::array<LegSigma, 4> LegSigmas(const std::array<Eigen::Vector2d, 4>& legs, co
 // which the pose takes up; only legs around the sensor show it as a larger shelf.
 constexpr double kMinBiasSpread_rad = std::numbers::pi / 3.0;
 
-// The largest angle between two legs' beams [rad].
-double MaxBearingSpread(const std::array<Eigen::Vector2d, 4>& legs, int count) {
-  double widest = 0.0;
+// True when the beams to two of the legs lie at least `angle_rad` apart (their cosine at most
+// cos(angle_rad)).
+bool BeamsSpanAtLeast(const std::array<Eigen::Vector2d, 4>& legs, int count, double angle_rad) {
+  const double cos_limit = std::cos(angle_rad);
   for (int i = 0; i < count; ++i) {
     for (int j = i + 1; j < count; ++j) {
-      const double cross = legs[i].x() * legs[j].y() - legs[i].y() * legs[j].x();
-      widest = std::max(widest, std::abs(std::atan2(cross, legs[i].dot(legs[j]))));
+      if (legs[i].dot(legs[j]) <= cos_limit * legs[i].norm() * legs[j].norm()) return true;
     }
   }
-  return widest;
+  return false;
 }
 
 // The legs' chi-square against the model for the confidence: each leg's own std widened by what a
@@ -201,16 +201,16 @@ double MaxBearingSpread(const std::array<Eigen::Vector2d, 4>& legs, int count) {
 // detection more among 12000 WLR-716 clutter scenes, at 60 degrees neither.
 double ConfidenceChiSquare(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
                            const geometry::ShelfModel& model, const ShelfFitResult& fit,
-                           const ShelfRefineResult& refined, const ScoreInputs& in) {
+                           const ShelfRefineResult& refined, std::array<LegSigma, 4> sigma,
+                           const ScoreInputs& in) {
   const double build = in.config.evidence.build_sigma_m;
   const double bias = in.config.evidence.range_bias_sigma_m;
   if (build <= 0.0 && bias <= 0.0) return refined.chi2;
-  std::array<LegSigma, 4> sigma = LegSigmas(legs, set, in);
   for (int i = 0; i < set.count; ++i) {
     sigma[i].along_m = std::hypot(sigma[i].along_m, build);
     sigma[i].across_m = std::hypot(sigma[i].across_m, build);
   }
-  if (bias > 0.0 && MaxBearingSpread(legs, set.count) >= kMinBiasSpread_rad) {
+  if (bias > 0.0 && BeamsSpanAtLeast(legs, set.count, kMinBiasSpread_rad)) {
     return FitWithRangeBias(legs, set.count, model, fit.corner_of_leg, refined.T_lidar_shelf, sigma,
                             bias)
         .chi2;
@@ -291,8 +291,8 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   }
   // The pose the fitted legs support best, each weighed by its returns; every check below reads
   // it, and its chi-square makes the confidence.
-  const ShelfRefineResult refined_pose =
-      RefineShelfPose(legs, set.count, model, *fit, LegSigmas(legs, set, in));
+  const std::array<LegSigma, 4> sigma = LegSigmas(legs, set, in);
+  const ShelfRefineResult refined_pose = RefineShelfPose(legs, set.count, model, *fit, sigma);
   const geometry::Pose2& T_lidar_shelf = refined_pose.T_lidar_shelf;
   rec.T_lidar_shelf = T_lidar_shelf;
   // Eq. 2 again on the fitted (unbiased) leg centres: this is what tells close models apart.
@@ -344,7 +344,8 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   // A shelf the map vouches for may stand off its drawing by its build tolerance
   // (ConfidenceChiSquare); legs that only the scan vouches for must match the drawing.
   const double confidence_chi2 =
-      vouched ? ConfidenceChiSquare(legs, set, model, *fit, refined_pose, in) : refined_pose.chi2;
+      vouched ? ConfidenceChiSquare(legs, set, model, *fit, refined_pose, sigma, in)
+              : refined_pose.chi2;
   ev.confidence = ShelfConfidence(ev, confidence_chi2, set.count, config.evidence);
   h.corners_present =
       static_cast<int>(std::count(ev.legs.begin(), ev.legs.end(), LegView::kPresent));

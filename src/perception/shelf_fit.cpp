@@ -13,17 +13,6 @@
 namespace shelfdock::perception {
 namespace {
 
-// Eq. 8-10 for all legs: u_i = (c_x, c_y) + R(c_alpha) (s_x L/2, s_y W/2) is the model corner
-// leg i belongs to (Eq. 8-9 is the corner with s = (-1, -1)); residual_i = leg_i - u_i.
-// Eq. 10 sums |dx| + |dy|: that is not rotation invariant, not differentiable at the optimum
-// and not what the "nonlinear least squares" of Eq. 11 solves. We use the squared Euclidean
-// distance (the maximum-likelihood choice for isotropic Gaussian leg errors), made robust to a
-// wrong leg by Cauchy weights applied as iteratively reweighted least squares (the residuals
-// are scaled by sqrt(w_i)). Unused legs (3-leg sets) have zero weight.
-// Each residual is split along and across the leg's beam and divided by its std there (a
-// deviation from the paper's equal weights): a fitted leg centre is known to a fraction of a
-// beam step across the beam (its silhouette) but only to range noise / sqrt(beams on the leg)
-// along it, so equal weights let the range noise of the far legs into the heading.
 // Leg (lx, ly) against model corner k at the pose x = (x, y, yaw) (c, s: its cos and sin): the
 // error along and across the leg's beam over their std (A), into r[0], r[1].
 template <typename T>
@@ -35,6 +24,17 @@ void LegResidual(const T& lx, const T& ly, const Eigen::Vector2d& k, const Eigen
   r[1] = T(A(1, 0)) * ex + T(A(1, 1)) * ey;
 }
 
+// Eq. 8-10 for all legs: u_i = (c_x, c_y) + R(c_alpha) (s_x L/2, s_y W/2) is the model corner
+// leg i belongs to (Eq. 8-9 is the corner with s = (-1, -1)); residual_i = leg_i - u_i.
+// Eq. 10 sums |dx| + |dy|: that is not rotation invariant, not differentiable at the optimum
+// and not what the "nonlinear least squares" of Eq. 11 solves. We use the squared Euclidean
+// distance (the maximum-likelihood choice for isotropic Gaussian leg errors), made robust to a
+// wrong leg by Cauchy weights applied as iteratively reweighted least squares (the residuals
+// are scaled by sqrt(w_i)). Unused legs (3-leg sets) have zero weight.
+// Each residual is split along and across the leg's beam and divided by its std there (a
+// deviation from the paper's equal weights): a fitted leg centre is known to a fraction of a
+// beam step across the beam (its silhouette) but only to range noise / sqrt(beams on the leg)
+// along it, so equal weights let the range noise of the far legs into the heading.
 struct CornerCost {
   // Zeroed: a 3-leg set leaves slot 3 unset, and its residual is 0 * (A * e) only while e is
   // finite (Eigen leaves vectors uninitialised; stack garbage there made the sanitizer build's
@@ -173,11 +173,15 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
 }
 
 namespace {
+// The unit direction of the beam to `leg` (x for a leg at the sensor).
+Eigen::Vector2d BeamDirection(const Eigen::Vector2d& leg) {
+  const double norm = leg.norm();
+  return norm > 1e-9 ? Eigen::Vector2d(leg / norm) : Eigen::Vector2d::UnitX();
+}
+
 // Rows: the error along and across the leg's beam, each over its std.
 Eigen::Matrix2d InfoSqrt(const Eigen::Vector2d& leg, const LegSigma& sigma) {
-  const double norm = leg.norm();
-  const Eigen::Vector2d along =
-      norm > 1e-9 ? Eigen::Vector2d(leg / norm) : Eigen::Vector2d::UnitX();
+  const Eigen::Vector2d along = BeamDirection(leg);
   const double w_along = 1.0 / sigma.along_m;
   const double w_across = 1.0 / sigma.across_m;
   Eigen::Matrix2d a;
@@ -240,8 +244,7 @@ RangeBiasFit FitWithRangeBias(const std::array<Eigen::Vector2d, 4>& legs, int co
   for (int i = 0; i < count; ++i) {
     cost.legs[i] = legs[i];
     cost.corners[i] = corners[corner_of_leg[i]];
-    const double norm = legs[i].norm();
-    cost.rays[i] = norm > 1e-9 ? Eigen::Vector2d(legs[i] / norm) : Eigen::Vector2d::UnitX();
+    cost.rays[i] = BeamDirection(legs[i]);
     cost.info_sqrt[i] = InfoSqrt(legs[i], sigma[i]);
   }
   cost.inv_sigma_b = 1.0 / bias_sigma_m;
