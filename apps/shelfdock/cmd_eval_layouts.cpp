@@ -23,6 +23,7 @@
 #include "io/lidar_config_yaml.hpp"
 #include "io/models_yaml.hpp"
 #include "perception/detector.hpp"
+#include "sim/world_objects.hpp"
 
 namespace shelfdock::app {
 namespace {
@@ -127,10 +128,10 @@ int RunEvalLayouts(const EvalLayoutsOptions& opt) {
     layout.row_max_gap_m = hi;
   }
   if (!opt.as_built.empty()) {
-    // Beyond a few centimetres a leg stands elsewhere, beyond 45 degrees a square leg turns
-    // into itself: no build tolerance is that loose.
+    // The bounds a shelf's legs as built may have (sim::ShelfInstance::legs_as_built).
     const double error = opt.as_built[0], twist = opt.as_built[1];
-    if (!(error >= 0.0 && error <= 0.05 && twist >= 0.0 && twist <= 0.785)) {
+    if (!(error >= 0.0 && error <= sim::kMaxLegBuildError_m && twist >= 0.0 &&
+          twist <= sim::kMaxLegTwist_rad)) {
       throw io::InputError(kCommandLine, "--as-built",
                            "needs 0 <= ERROR <= 0.05 [m] and 0 <= TWIST <= 0.785 [rad]");
     }

@@ -59,20 +59,24 @@ void World::AddPerson(const Person& person) { people_.push_back(person); }
 
 void World::AddRobot(const MovingRobot& robot) { robots_.push_back(robot); }
 
-bool World::SetShelfPose(int id, const geometry::Pose2& T_world_shelf) {
+ShelfInstance* World::FindShelf(int id) {
   auto it = std::find_if(shelves_.begin(), shelves_.end(),
                          [id](const ShelfInstance& s) { return s.id == id; });
-  if (it == shelves_.end()) return false;
-  it->T_world_shelf = T_world_shelf;
+  return it == shelves_.end() ? nullptr : &*it;
+}
+
+bool World::SetShelfPose(int id, const geometry::Pose2& T_world_shelf) {
+  ShelfInstance* shelf = FindShelf(id);
+  if (shelf == nullptr) return false;
+  shelf->T_world_shelf = T_world_shelf;
   Rebuild();
   return true;
 }
 
 bool World::SetLegsAsBuilt(int id, std::vector<geometry::Pose2> legs_as_built) {
-  auto it = std::find_if(shelves_.begin(), shelves_.end(),
-                         [id](const ShelfInstance& s) { return s.id == id; });
-  if (it == shelves_.end()) return false;
-  it->legs_as_built = std::move(legs_as_built);
+  ShelfInstance* shelf = FindShelf(id);
+  if (shelf == nullptr) return false;
+  shelf->legs_as_built = std::move(legs_as_built);
   Rebuild();
   return true;
 }

@@ -56,6 +56,8 @@ class World {
 
  private:
   void Rebuild();
+  /// The shelf with `id`, or nullptr.
+  ShelfInstance* FindShelf(int id);
 
   std::vector<ShelfInstance> shelves_;
   std::vector<Wall> walls_;

@@ -143,7 +143,8 @@ std::optional<geometry::ConfigViolation> FindConfigViolation(const ShelfInstance
       shelf.legs_as_built.empty() || shelf.legs_as_built.size() == shelf.model.LegCentres().size(),
       "legs_as_built", "none, or one {x, y, yaw} per leg (4)");
   for (const geometry::Pose2& leg : shelf.legs_as_built) {
-    k.Check(std::abs(leg.x) <= 0.05 && std::abs(leg.y) <= 0.05 && std::abs(leg.yaw) <= 0.785,
+    k.Check(std::abs(leg.x) <= kMaxLegBuildError_m && std::abs(leg.y) <= kMaxLegBuildError_m &&
+                std::abs(leg.yaw) <= kMaxLegTwist_rad,
             "legs_as_built",
             "each leg within 0.05 m of its design place and 0.785 rad of the "
             "shelf's heading");

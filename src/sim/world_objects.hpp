@@ -26,6 +26,11 @@ struct ShelfInstance {
   std::vector<geometry::Pose2> legs_as_built;
 };
 
+/// The loosest build tolerance ShelfInstance::legs_as_built may describe: beyond a few
+/// centimetres a leg stands elsewhere, beyond 45 degrees a square leg turns into itself.
+inline constexpr double kMaxLegBuildError_m = 0.05;  ///< [m] along each shelf axis
+inline constexpr double kMaxLegTwist_rad = 0.785;    ///< [rad]
+
 /// The true footprint of one shelf leg in the world frame, for clearance checks when docking.
 struct LegFootprint {
   int shelf_id = 0;
