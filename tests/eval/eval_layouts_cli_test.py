@@ -30,6 +30,16 @@ def check_reproduction(shelfdock, source, truth_file):
     assert abs(d["x"] - first["x"]) < 1e-6 and abs(d["y"] - first["y"]) < 1e-6, truth_file.name
 
 
+def dump_every_scene(shelfdock, source, directory, args):
+    """Runs `eval-layouts ARGS --dump-failures DIRECTORY --dump-all` (DIRECTORY emptied first),
+    asserts exit 0 and returns the run and the dumped truth files, sorted."""
+    shutil.rmtree(directory, ignore_errors=True)
+    r = run(shelfdock, ["eval-layouts"] + args + ["--dump-failures", str(directory), "--dump-all"],
+            source)
+    assert r.returncode == 0, f"eval-layouts {' '.join(args)}: exit {r.returncode}\n{r.stderr}"
+    return r, sorted(directory.glob("*.truth.json"))
+
+
 def main():
     shelfdock, source, work = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[3])
     dump, report = work / "layout_failures", work / "layouts.json"
@@ -50,12 +60,8 @@ def main():
     print(f"eval-layouts: {len(truths)} failing scenes reproduced by detect")
 
     # --dump-all: every scene, right ones too, each reproduced the same way.
-    every = work / "layout_scenes"
-    shutil.rmtree(every, ignore_errors=True)
-    r = run(shelfdock, ["eval-layouts", "--scenes-per-class", "6", "--class", "open",
-                        "--dump-failures", str(every), "--dump-all"], source)
-    assert r.returncode == 0, f"eval-layouts --dump-all: exit {r.returncode}\n{r.stderr}"
-    truths = sorted(every.glob("*.truth.json"))
+    _, truths = dump_every_scene(shelfdock, source, work / "layout_scenes",
+                                 ["--scenes-per-class", "6", "--class", "open"])
     assert len(truths) == 6, f"{len(truths)} scenes dumped of 6"
     assert any(json.loads(t.read_text())["outcome"] == "right-first" for t in truths)
     for t in truths:
@@ -64,15 +70,12 @@ def main():
 
     # --map-knows-model: the target's model alone; each dumped detect line names it (--model)
     # and reproduces the sweep's first detection; the JSON says how the sweep ran.
-    known, known_report = work / "layout_known_model", work / "layouts_known_model.json"
-    shutil.rmtree(known, ignore_errors=True)
-    r = run(shelfdock, ["eval-layouts", "--scenes-per-class", "6", "--class", "against_wall",
-                        "--map-knows-model", "--json", str(known_report), "--dump-failures",
-                        str(known), "--dump-all"], source)
-    assert r.returncode == 0, f"eval-layouts --map-knows-model: exit {r.returncode}\n{r.stderr}"
+    known_report = work / "layouts_known_model.json"
+    r, truths = dump_every_scene(shelfdock, source, work / "layout_known_model",
+                                 ["--scenes-per-class", "6", "--class", "against_wall",
+                                  "--map-knows-model", "--json", str(known_report)])
     assert "the map names the target's model" in r.stdout, r.stdout
     assert json.loads(known_report.read_text())["map_knows_model"] is True
-    truths = sorted(known.glob("*.truth.json"))
     assert len(truths) == 6, f"{len(truths)} scenes dumped of 6"
     for t in truths:
         truth = json.loads(t.read_text())
@@ -80,25 +83,18 @@ def main():
         check_reproduction(shelfdock, source, t)
 
     # --row-gaps: rows drawn with other gaps; each dumped scene's detect line reproduces it.
-    gaps = work / "layout_row_gaps"
-    shutil.rmtree(gaps, ignore_errors=True)
-    r = run(shelfdock, ["eval-layouts", "--scenes-per-class", "4", "--class", "row",
-                        "--row-gaps", "0.9", "1.1", "--dump-failures", str(gaps), "--dump-all"],
-            source)
-    assert r.returncode == 0, f"eval-layouts --row-gaps: exit {r.returncode}\n{r.stderr}"
-    for t in sorted(gaps.glob("*.truth.json")):
+    _, truths = dump_every_scene(shelfdock, source, work / "layout_row_gaps",
+                                 ["--scenes-per-class", "4", "--class", "row",
+                                  "--row-gaps", "0.9", "1.1"])
+    for t in truths:
         check_reproduction(shelfdock, source, t)
     expect_bad_input(shelfdock, source, ["eval-layouts", "--row-gaps", "0.5", "0.2"], "--row-gaps")
     expect_bad_input(shelfdock, source, ["eval-layouts", "--row-gaps", "-1", "0.2"], "--row-gaps")
 
     # --as-built: shelves off their drawings; the dump names each leg's offset and reproduces.
-    built = work / "layout_as_built"
-    shutil.rmtree(built, ignore_errors=True)
-    r = run(shelfdock, ["eval-layouts", "--scenes-per-class", "2", "--class", "open",
-                        "--as-built", "0.01", "0.05", "--dump-failures", str(built), "--dump-all"],
-            source)
-    assert r.returncode == 0, f"eval-layouts --as-built: exit {r.returncode}\n{r.stderr}"
-    truths = sorted(built.glob("*.truth.json"))
+    _, truths = dump_every_scene(shelfdock, source, work / "layout_as_built",
+                                 ["--scenes-per-class", "2", "--class", "open",
+                                  "--as-built", "0.01", "0.05"])
     assert len(truths) == 2, f"{len(truths)} scenes dumped of 2"
     for t in truths:
         truth = json.loads(t.read_text())
