@@ -63,6 +63,7 @@ void ReadLegFit(YamlFields f, perception::LegFitConfig& c) {
   f.Read("silhouette_sigma_beams", c.silhouette_sigma_beams);
   f.Read("pca_min_points", c.pca_min_points);
   f.Read("one_edge_max_points", c.one_edge_max_points);
+  f.Read("mixed_edge_share", c.mixed_edge_share);
   f.Read("pca_min_anisotropy", c.pca_min_anisotropy);
   f.Read("max_iterations", c.max_iterations);
   f.RejectUnknown();

@@ -14,6 +14,7 @@
 #include "perception/leg_completion.hpp"
 #include "perception/leg_fit.hpp"
 #include "perception/leg_search.hpp"
+#include "perception/mixed_returns.hpp"
 #include "perception/model_match.hpp"
 #include "perception/preset_gate.hpp"
 #include "perception/shelf_evidence.hpp"
@@ -52,16 +53,17 @@ struct LegFitCache {
   std::vector<Entry> entries;
 
   const LegFitResult& Get(int cluster, const geometry::ShelfModel& model, double hint,
-                          const std::vector<Cluster>& clusters, const LegFitConfig& config) {
+                          const std::vector<Cluster>& clusters, const LegFitConfig& config,
+                          double range_noise_m) {
     for (const auto& e : entries) {
       if (e.cluster == cluster && e.leg->shape == model.leg.shape &&
           e.leg->length_m == model.leg.length_m && e.leg->width_m == model.leg.width_m) {
         return e.fit;
       }
     }
-    entries.push_back(
-        {cluster, &model.leg,
-         FitLeg(clusters[cluster].points, model.leg, hint, config, clusters[cluster].edges)});
+    entries.push_back({cluster, &model.leg,
+                       FitLeg(clusters[cluster].points, model.leg, hint, config,
+                              clusters[cluster].edges, range_noise_m)});
     return entries.back().fit;
   }
 };
@@ -235,6 +237,7 @@ std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs, c
       r.points = &c.points;
       r.silhouette = MakeSilhouetteTerm(c.points, c.edges, in.config.leg_fit);
       r.range_sigma_m = in.range_noise_m;
+      r.mixed_gaps = MixedEdgeGaps(c.points, c.edges, in.range_noise_m);
     }
     out.push_back(r);
   }
@@ -279,9 +282,11 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     const Cluster& c = in.pre.candidates[set.legs[i]];
     // A leg seen only blended with its background (CompleteLegSets): on its returns' bearing,
     // at the range the completed shelf puts it.
-    legs[i] = c.assumed_range_m
-                  ? AssumedCentre(c)
-                  : cache.Get(set.legs[i], model, hint, in.pre.candidates, config.leg_fit).centre;
+    legs[i] = c.assumed_range_m ? AssumedCentre(c)
+                                : cache
+                                      .Get(set.legs[i], model, hint, in.pre.candidates,
+                                           config.leg_fit, in.range_noise_m)
+                                      .centre;
   }
   rec.legs.assign(legs.begin(), legs.begin() + set.count);
   const auto fit = FitShelf(legs, set.count, model, config.shelf_fit);

@@ -60,6 +60,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(l.one_edge_max_points >= 0, "leg_fit.one_edge_max_points", ">= 0");
   k.Check(l.pca_min_anisotropy >= 1.0, "leg_fit.pca_min_anisotropy", ">= 1");
   k.Check(l.max_iterations >= 1, "leg_fit.max_iterations", ">= 1");
+  k.Check(l.mixed_edge_share >= 0.0 && l.mixed_edge_share < 1.0, "leg_fit.mixed_edge_share",
+          "in [0, 1)");
 
   const auto& f = c.shelf_fit;
   k.Check(f.loss_scale_m > 0.0, "shelf_fit.loss_scale_m", "> 0");

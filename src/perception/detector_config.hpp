@@ -102,6 +102,9 @@ struct LegFitConfig {
                                         ///< view's end); else between its outer beams
   double pca_min_anisotropy = 20;       ///< [-] eigenvalue ratio for a PCA direction to be trusted
   int max_iterations = 20;              ///< [-] solver iterations
+  double mixed_edge_share = 0.5;        ///< [-] prior share of blends (mixed pixels) among a leg's
+                                        ///< outer returns that lie behind their inner neighbour
+                                        ///< with a farther surface beyond (MixedEdgeGaps); 0: off
 };
 
 /// Paper 3.4: shelf centre and heading by nonlinear least squares (Eq. 8-11).

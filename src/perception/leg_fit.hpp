@@ -51,9 +51,12 @@ SilhouetteTerm MakeSilhouetteTerm(const std::vector<ScanPoint>& points,
 /// are mounted square to the frame). Unlike the bare centroid, the fit is not pulled toward the
 /// sensor by the leg's half depth. Across the beams the leg's outline (silhouette) places it:
 /// centred between its outer beams when the scan shows both edges or neither, against the one
-/// edge `edges` shows when the other side may go on (a dropout, an occluder).
+/// edge `edges` shows when the other side may go on (a dropout, an occluder). An outer return
+/// that may be a blend of the leg and the surface beyond its edge (MixedEdgeGaps) keeps its range
+/// only as far as a plain return of the range noise `range_noise_m` explains it (0: the
+/// configured LegFitConfig::range_sigma_m).
 LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegModel& leg,
                     double axis_yaw_hint, const LegFitConfig& config,
-                    const SilhouetteEdges& edges = {});
+                    const SilhouetteEdges& edges = {}, double range_noise_m = 0.0);
 
 }  // namespace shelfdock::perception

@@ -1,5 +1,6 @@
 #include "perception/shelf_return_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -9,6 +10,7 @@
 #include "geometry/angle.hpp"
 #include "perception/leg_ray_residual.hpp"
 #include "perception/leg_silhouette.hpp"
+#include "perception/mixed_returns.hpp"
 
 namespace shelfdock::perception {
 namespace {
@@ -157,6 +159,13 @@ ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
         double r[2];
         cost.ReturnResidual(centre, c, s, (*leg.points)[i], r);
         weights[l][i] = HuberSqrtWeight(std::hypot(r[0], r[1]), config.loss_scale_m);
+        // As FitLeg: an outer return that may be a blend keeps its range as far as the noise
+        // explains it.
+        if (!leg.mixed_gaps.empty()) {
+          weights[l][i] = std::min(weights[l][i],
+                                   MixedReturnSqrtWeight(r[0], leg.range_sigma_m, leg.mixed_gaps[i],
+                                                         config.mixed_edge_share));
+        }
       }
       const SilhouetteTerm& sil = leg.silhouette;
       if (sil.sigma_rad > 0.0) {
