@@ -35,6 +35,9 @@ double MixedReturnSqrtWeight(double range_residual_m, double sigma_m, double gap
   const double plain =
       (1.0 - share) * std::exp(-0.5 * z * z) / (sigma_m * std::sqrt(2.0 * std::numbers::pi));
   const double blend = share * (cdf(z) - cdf((r - g) / sigma_m)) / g;
+  // Far out both densities underflow: in front of the leg a blend cannot be, behind it a plain
+  // return cannot.
+  if (!(plain + blend > 0.0)) return r < 0.0 ? 1.0 : 0.0;
   return std::sqrt(plain / (plain + blend));
 }
 

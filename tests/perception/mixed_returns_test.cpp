@@ -61,6 +61,9 @@ TEST(MixedReturnsTest, TheWeightFallsOnceTheNoiseNoLongerExplainsTheResidual) {
     EXPECT_LE(w, last + 1e-12) << r;
     last = w;
   }
+  // Far out, where both densities underflow: still a weight, never NaN.
+  EXPECT_EQ(MixedReturnSqrtWeight(-2.0, sigma, gap, share), 1.0);
+  EXPECT_EQ(MixedReturnSqrtWeight(2.0, sigma, gap, share), 0.0);
   // Not a candidate, or blends off: full weight.
   EXPECT_EQ(MixedReturnSqrtWeight(0.05, sigma, 0.0, share), 1.0);
   EXPECT_EQ(MixedReturnSqrtWeight(0.05, sigma, gap, 0.0), 1.0);
