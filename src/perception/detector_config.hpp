@@ -104,7 +104,7 @@ struct LegFitConfig {
   int max_iterations = 20;              ///< [-] solver iterations
   double mixed_edge_share = 0.5;        ///< [-] prior share of blends (mixed pixels) among a leg's
                                         ///< outer returns that lie behind their inner neighbour
-                                        ///< with a farther surface beyond (MixedEdgeGaps); 0: off
+                                        ///< with a farther surface beyond (FindMixedEdges); 0: off
 };
 
 /// Paper 3.4: shelf centre and heading by nonlinear least squares (Eq. 8-11).

@@ -147,7 +147,7 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
   // return put a 40 mm leg 3-4 cm behind its face (eval-layouts: legs a few centimetres in front
   // of a wall or a neighbour's leg, the 1080x856 then fitting the 1075x883 better).
   const double sigma = range_noise_m > 0.0 ? range_noise_m : config.range_sigma_m;
-  const std::vector<double> mixed_gaps = MixedEdgeGaps(points, edges, sigma);
+  const MixedEdges mixed = FindMixedEdges(points, edges, sigma);
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
   for (const auto& q : points) centroid += q.p;
   centroid /= static_cast<double>(points.size());
@@ -207,10 +207,11 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
   // them (LegFitTest.BlendedEdgeReturnsDoNotPullTheLegOntoTheWallBehind: round legs 10 / 17 mm
   // behind their face with the weights from the second round, 6 / 4 mm with them from the start).
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (mixed_gaps[i] == 0.0) continue;
+    const double gap = mixed.Gap(i, points.size());
+    if (gap == 0.0) continue;
     double r[2];
     cost.ReturnResidual(c.data(), points[i], r);
-    weights[i] = MixedReturnSqrtWeight(r[0], sigma, mixed_gaps[i], config.mixed_edge_share);
+    weights[i] = MixedReturnSqrtWeight(r[0], sigma, gap, config.mixed_edge_share);
   }
   for (int round_i = 0; round_i < kIrlsRounds && ok; ++round_i) {
     solver.Solve(function, &c);
@@ -219,9 +220,9 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
     for (std::size_t i = 0; i < points.size(); ++i) {
       double r[2];
       cost.ReturnResidual(c.data(), points[i], r);
-      weights[i] =
-          std::min(HuberSqrtWeight(std::hypot(r[0], r[1]), config.loss_scale_m),
-                   MixedReturnSqrtWeight(r[0], sigma, mixed_gaps[i], config.mixed_edge_share));
+      weights[i] = std::min(
+          HuberSqrtWeight(std::hypot(r[0], r[1]), config.loss_scale_m),
+          MixedReturnSqrtWeight(r[0], sigma, mixed.Gap(i, points.size()), config.mixed_edge_share));
     }
     // A missed edge beam (dropout, a trailing point removed) or a leg partly hidden behind
     // another cuts one side of the silhouette: the same robust loss.

@@ -52,7 +52,7 @@ SilhouetteTerm MakeSilhouetteTerm(const std::vector<ScanPoint>& points,
 /// sensor by the leg's half depth. Across the beams the leg's outline (silhouette) places it:
 /// centred between its outer beams when the scan shows both edges or neither, against the one
 /// edge `edges` shows when the other side may go on (a dropout, an occluder). An outer return
-/// that may be a blend of the leg and the surface beyond its edge (MixedEdgeGaps) keeps its range
+/// that may be a blend of the leg and the surface beyond its edge (FindMixedEdges) keeps its range
 /// only as far as a plain return of the range noise `range_noise_m` explains it (0: the
 /// configured LegFitConfig::range_sigma_m).
 LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegModel& leg,

@@ -6,20 +6,20 @@
 
 namespace shelfdock::perception {
 
-std::vector<double> MixedEdgeGaps(const std::vector<ScanPoint>& points,
-                                  const SilhouetteEdges& edges, double min_step_m) {
-  std::vector<double> gaps(points.size(), 0.0);
+MixedEdges FindMixedEdges(const std::vector<ScanPoint>& points, const SilhouetteEdges& edges,
+                          double min_step_m) {
+  MixedEdges out;
   const std::size_t n = points.size();
-  if (n < 2) return gaps;
+  if (n < 2) return out;
   if (edges.before_step_m && *edges.before_step_m > 0.0 &&
       points[0].range > points[1].range + min_step_m) {
-    gaps[0] = *edges.before_step_m;
+    out.first_gap_m = *edges.before_step_m;
   }
   if (edges.after_step_m && *edges.after_step_m > 0.0 &&
       points[n - 1].range > points[n - 2].range + min_step_m) {
-    gaps[n - 1] = *edges.after_step_m;
+    out.last_gap_m = *edges.after_step_m;
   }
-  return gaps;
+  return out;
 }
 
 double MixedReturnSqrtWeight(double range_residual_m, double sigma_m, double gap_m, double share) {

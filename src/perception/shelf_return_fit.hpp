@@ -10,6 +10,7 @@
 #include "geometry/shelf_model.hpp"
 #include "perception/detector_config.hpp"
 #include "perception/leg_fit.hpp"
+#include "perception/mixed_returns.hpp"
 #include "perception/scan_point.hpp"
 #include "perception/shelf_fit.hpp"
 
@@ -23,9 +24,8 @@ struct LegReturns {
   const std::vector<ScanPoint>* points = nullptr;
   SilhouetteTerm silhouette;
   double range_sigma_m = 0.01;  ///< [m] std of one return's range on this leg
-  /// Per return, the gap to the surface beyond an outer return that may be a blend
-  /// (MixedEdgeGaps); empty: none may be.
-  std::vector<double> mixed_gaps;
+  /// Its outer returns that may be blends with the surface beyond (none by default).
+  MixedEdges mixed;
   /// A blended leg: where it stands and how well that is known along / across its beam.
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   LegSigma centre_sigma;

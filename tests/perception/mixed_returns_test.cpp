@@ -18,32 +18,36 @@ std::vector<ScanPoint> BlendedLeg() {
   return {BeamPoint(10, 3.05), BeamPoint(11, 3.0), BeamPoint(12, 3.05)};
 }
 
+void ExpectNoBlend(const MixedEdges& mixed) {
+  EXPECT_EQ(mixed.first_gap_m, 0.0);
+  EXPECT_EQ(mixed.last_gap_m, 0.0);
+}
+
 TEST(MixedReturnsTest, OuterReturnsBehindTheLegWithASurfaceBeyondMayBeBlends) {
   SilhouetteEdges edges;
   edges.before_step_m = 0.1;
   edges.after_step_m = 0.3;
-  const std::vector<double> gaps = MixedEdgeGaps(BlendedLeg(), edges, 0.01);
-  ASSERT_EQ(gaps.size(), 3u);
-  EXPECT_DOUBLE_EQ(gaps[0], 0.1);
-  EXPECT_DOUBLE_EQ(gaps[1], 0.0);  // an inner return is the leg's
-  EXPECT_DOUBLE_EQ(gaps[2], 0.3);
+  const MixedEdges mixed = FindMixedEdges(BlendedLeg(), edges, 0.01);
+  EXPECT_DOUBLE_EQ(mixed.Gap(0, 3), 0.1);
+  EXPECT_DOUBLE_EQ(mixed.Gap(1, 3), 0.0);  // an inner return is the leg's
+  EXPECT_DOUBLE_EQ(mixed.Gap(2, 3), 0.3);
 }
 
 TEST(MixedReturnsTest, NoBlendWithoutASurfaceBeyondOrAStepBehind) {
   // The beam beyond returned from something nearer (an occluder), or nothing.
   SilhouetteEdges occluded;
   occluded.before_step_m = -0.5;
-  EXPECT_EQ(MixedEdgeGaps(BlendedLeg(), occluded, 0.01), std::vector<double>(3, 0.0));
+  ExpectNoBlend(FindMixedEdges(BlendedLeg(), occluded, 0.01));
   // The outer returns no farther than their neighbour allows: the leg's own face.
   SilhouetteEdges edges;
   edges.before_step_m = 0.1;
   edges.after_step_m = 0.1;
   const std::vector<ScanPoint> flat = {BeamPoint(10, 3.005), BeamPoint(11, 3.0),
                                        BeamPoint(12, 3.008)};
-  EXPECT_EQ(MixedEdgeGaps(flat, edges, 0.01), std::vector<double>(3, 0.0));
+  ExpectNoBlend(FindMixedEdges(flat, edges, 0.01));
   // One return: nothing tells a blend from the leg.
-  EXPECT_EQ(MixedEdgeGaps({BeamPoint(10, 3.0)}, edges, 0.01), std::vector<double>(1, 0.0));
-  EXPECT_TRUE(MixedEdgeGaps({}, edges, 0.01).empty());
+  ExpectNoBlend(FindMixedEdges({BeamPoint(10, 3.0)}, edges, 0.01));
+  ExpectNoBlend(FindMixedEdges({}, edges, 0.01));
 }
 
 TEST(MixedReturnsTest, TheWeightFallsOnceTheNoiseNoLongerExplainsTheResidual) {
