@@ -72,13 +72,8 @@ TEST(LegFitTest, NoisyRangesGiveNoBiasAlongTheBeam) {
     double sum_radial = 0.0;
     constexpr int kDraws = 200;
     for (int k = 0; k < kDraws; ++k) {
-      auto pts = leg.shape == geometry::LegShape::kCircle
-                     ? testing::CastCircle(c, leg.Radius(), kAlpha)
-                     : testing::CastBox(geometry::Pose2(c.x(), c.y(), 0.0), 0.04, 0.04, kAlpha);
-      for (auto& q : pts) {
-        q.range += noise(rng);
-        q.p = q.range * Eigen::Vector2d(std::cos(q.angle), std::sin(q.angle));
-      }
+      auto pts = testing::CastLeg(leg, geometry::Pose2(c.x(), c.y(), 0.0), kAlpha);
+      testing::AddRangeNoise(pts, noise, rng);
       sum_radial += (FitLeg(pts, leg, 0.0, config).centre - c).dot(view);
     }
     EXPECT_LT(std::abs(sum_radial / kDraws), 1.5e-3);
@@ -105,14 +100,9 @@ TEST(LegFitTest, TheErrorAlongTheBeamIsTheRangeNoiseOverTheReturns) {
       for (int k = 0; k < kDraws; ++k) {
         const double bearing = 0.1 + phase(rng);
         const Eigen::Vector2d c = range * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
-        auto pts = leg.shape == geometry::LegShape::kCircle
-                       ? testing::CastCircle(c, leg.Radius(), kAlpha)
-                       : testing::CastBox(geometry::Pose2(c.x(), c.y(), 0.0), 0.04, 0.04, kAlpha);
+        auto pts = testing::CastLeg(leg, geometry::Pose2(c.x(), c.y(), 0.0), kAlpha);
         ASSERT_FALSE(pts.empty());
-        for (auto& q : pts) {
-          q.range += noise(rng);
-          q.p = q.range * Eigen::Vector2d(std::cos(q.angle), std::sin(q.angle));
-        }
+        testing::AddRangeNoise(pts, noise, rng);
         const double along = (FitLeg(pts, leg, 0.0, config).centre - c).dot(c.normalized());
         sum_sq += along * along;
         sum_bound += kSigma * kSigma / static_cast<double>(pts.size());
@@ -143,16 +133,11 @@ TEST(LegFitTest, NoisyRangesLeaveTheCentreOnTheSilhouetteBisector) {
       for (int k = 0; k < kDraws; ++k) {
         const double bearing = 0.2 + phase(rng);
         const Eigen::Vector2d c(std::cos(bearing), std::sin(bearing));
-        auto pts = leg.shape == geometry::LegShape::kCircle
-                       ? testing::CastCircle(c, leg.Radius(), kAlpha)
-                       : testing::CastBox(geometry::Pose2(c.x(), c.y(), 0.5), 0.04, 0.04, kAlpha);
+        auto pts = testing::CastLeg(leg, geometry::Pose2(c.x(), c.y(), 0.5), kAlpha);
         // The helpers start at the left tangent; beams of a real scan fall at any phase.
         const double shift = phase(rng);
-        for (auto& q : pts) {
-          q.angle -= shift;
-          q.range += noise(rng);
-          q.p = q.range * Eigen::Vector2d(std::cos(q.angle), std::sin(q.angle));
-        }
+        for (auto& q : pts) q.angle -= shift;
+        testing::AddRangeNoise(pts, noise, rng);
         const Eigen::Vector2d truth =
             Eigen::Rotation2Dd(-shift) * c;  // the leg rotated with the beams
         const Eigen::Vector2d e = FitLeg(pts, leg, 0.5, config).centre - truth;
@@ -347,10 +332,8 @@ BlendedEdgeBias BlendedEdgeRadialBias(const geometry::LegModel& leg, double wall
     const double bearing = (10.0 + across(rng)) * kAlpha;
     const Eigen::Vector2d c = range(rng) * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
     const Eigen::Vector2d view = c.normalized();
-    std::vector<ScanPoint> pts = leg.shape == geometry::LegShape::kCircle
-                                     ? testing::CastCircle(c, leg.Radius(), kAlpha)
-                                     : testing::CastBox(geometry::Pose2(c.x(), c.y(), bearing),
-                                                        leg.length_m, leg.width_m, kAlpha);
+    std::vector<ScanPoint> pts =
+        testing::CastLeg(leg, geometry::Pose2(c.x(), c.y(), bearing), kAlpha);
     if (pts.empty()) continue;
     const double wall = c.norm() + wall_behind_m;
     SilhouetteEdges edges;
@@ -360,10 +343,7 @@ BlendedEdgeBias BlendedEdgeRadialBias(const geometry::LegModel& leg, double wall
       const double r = edge.range + blend(rng) * (wall - edge.range) + noise(rng);
       return ScanPoint{r * Eigen::Vector2d(std::cos(a), std::sin(a)), r, a, edge.beam + side};
     };
-    for (auto& q : pts) {
-      q.range += noise(rng);
-      q.p = q.range * Eigen::Vector2d(std::cos(q.angle), std::sin(q.angle));
-    }
+    testing::AddRangeNoise(pts, noise, rng);
     pts.insert(pts.begin(), blended(pts.front(), -1));
     pts.push_back(blended(pts.back(), +1));
     edges.before_rad = pts.front().angle - 0.5 * kAlpha;

@@ -107,4 +107,22 @@ inline std::vector<ScanPoint> CastBox(const geometry::Pose2& T_lidar_box, double
   return out;
 }
 
+/// Exact points of a ray fan on one leg section centred and turned as T_lidar_leg (a round leg
+/// ignores the turn): CastCircle or CastBox.
+inline std::vector<ScanPoint> CastLeg(const geometry::LegModel& leg,
+                                      const geometry::Pose2& T_lidar_leg, double angle_increment) {
+  return leg.shape == geometry::LegShape::kCircle
+             ? CastCircle(T_lidar_leg.translation(), leg.Radius(), angle_increment)
+             : CastBox(T_lidar_leg, leg.length_m, leg.width_m, angle_increment);
+}
+
+/// Adds a draw of `noise` to each point's range, keeping it on its beam.
+template <typename Noise, typename Rng>
+void AddRangeNoise(std::vector<ScanPoint>& points, Noise& noise, Rng& rng) {
+  for (auto& q : points) {
+    q.range += noise(rng);
+    q.p = q.range * Eigen::Vector2d(std::cos(q.angle), std::sin(q.angle));
+  }
+}
+
 }  // namespace shelfdock::perception::testing
