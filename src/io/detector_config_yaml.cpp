@@ -64,6 +64,7 @@ void ReadLegFit(YamlFields f, perception::LegFitConfig& c) {
   f.Read("pca_min_points", c.pca_min_points);
   f.Read("one_edge_max_points", c.one_edge_max_points);
   f.Read("mixed_edge_share", c.mixed_edge_share);
+  f.Read("mixed_min_noise_m", c.mixed_min_noise_m);
   f.Read("pca_min_anisotropy", c.pca_min_anisotropy);
   f.Read("max_iterations", c.max_iterations);
   f.RejectUnknown();

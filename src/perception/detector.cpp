@@ -237,7 +237,8 @@ std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs, c
       r.points = &c.points;
       r.silhouette = MakeSilhouetteTerm(c.points, c.edges, in.config.leg_fit);
       r.range_sigma_m = in.range_noise_m;
-      r.mixed = FindMixedEdges(c.points, c.edges, in.range_noise_m);
+      r.mixed =
+          FindMixedEdges(c.points, c.edges, MixedEdgeNoise(in.range_noise_m, in.config.leg_fit));
     }
     out.push_back(r);
   }

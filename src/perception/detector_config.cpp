@@ -62,6 +62,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(l.max_iterations >= 1, "leg_fit.max_iterations", ">= 1");
   k.Check(l.mixed_edge_share >= 0.0 && l.mixed_edge_share < 1.0, "leg_fit.mixed_edge_share",
           "in [0, 1)");
+  k.Check(l.mixed_min_noise_m >= 0.0, "leg_fit.mixed_min_noise_m", ">= 0");
 
   const auto& f = c.shelf_fit;
   k.Check(f.loss_scale_m > 0.0, "shelf_fit.loss_scale_m", "> 0");

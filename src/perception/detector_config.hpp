@@ -105,6 +105,10 @@ struct LegFitConfig {
   double mixed_edge_share = 0.5;        ///< [-] prior share of blends (mixed pixels) among a leg's
                                         ///< outer returns that lie behind their inner neighbour
                                         ///< with a farther surface beyond (FindMixedEdges); 0: off
+  double mixed_min_noise_m = 0.005;     ///< [m] floor on the range noise that weighing assumes:
+                                        ///< an ideal or very quiet scanner's scan estimates a
+                                        ///< fraction of a millimetre, and a return a millimetre
+                                        ///< off a fitted face would then pass for a blend
 };
 
 /// Paper 3.4: shelf centre and heading by nonlinear least squares (Eq. 8-11).

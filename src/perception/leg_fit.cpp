@@ -136,6 +136,14 @@ SilhouetteTerm MakeSilhouetteTerm(const std::vector<ScanPoint>& points,
   return term;
 }
 
+double MixedEdgeNoise(double range_noise_m, const LegFitConfig& config) {
+  // A floor: with the noise a scan of an ideal (simulated) or very quiet scanner estimates, a
+  // fraction of a millimetre, a square leg's side-face return a millimetre off the fitted face
+  // (a slightly wrong axis) would pass for a blend and lose its weight.
+  return std::max(range_noise_m > 0.0 ? range_noise_m : config.range_sigma_m,
+                  config.mixed_min_noise_m);
+}
+
 LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegModel& leg,
                     double axis_yaw_hint, const LegFitConfig& config, const SilhouetteEdges& edges,
                     double range_noise_m) {
@@ -146,7 +154,7 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
   // posterior of a plain return). Taken at face value, two blended edge returns beside one plain
   // return put a 40 mm leg 3-4 cm behind its face (eval-layouts: legs a few centimetres in front
   // of a wall or a neighbour's leg, the 1080x856 then fitting the 1075x883 better).
-  const double sigma = range_noise_m > 0.0 ? range_noise_m : config.range_sigma_m;
+  const double sigma = MixedEdgeNoise(range_noise_m, config);
   const MixedEdges mixed = FindMixedEdges(points, edges, sigma);
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
   for (const auto& q : points) centroid += q.p;

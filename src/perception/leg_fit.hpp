@@ -44,6 +44,11 @@ struct SilhouetteTerm {
 SilhouetteTerm MakeSilhouetteTerm(const std::vector<ScanPoint>& points,
                                   const SilhouetteEdges& edges, const LegFitConfig& config);
 
+/// The range noise the weighing of possible blends (FindMixedEdges, MixedReturnSqrtWeight)
+/// assumes: the scan's `range_noise_m` (0: the configured LegFitConfig::range_sigma_m), at least
+/// LegFitConfig::mixed_min_noise_m.
+double MixedEdgeNoise(double range_noise_m, const LegFitConfig& config);
+
 /// Paper 3.3: the leg centre from its points by nonlinear least squares (Ceres). Round legs use
 /// the residual |p - c| - r; rectangular legs the distance of each point to the nearest face of
 /// the G_h x G_w section that faces the sensor (at the origin). The section's axes come from
@@ -53,8 +58,7 @@ SilhouetteTerm MakeSilhouetteTerm(const std::vector<ScanPoint>& points,
 /// centred between its outer beams when the scan shows both edges or neither, against the one
 /// edge `edges` shows when the other side may go on (a dropout, an occluder). An outer return
 /// that may be a blend of the leg and the surface beyond its edge (FindMixedEdges) keeps its range
-/// only as far as a plain return of the range noise `range_noise_m` explains it (0: the
-/// configured LegFitConfig::range_sigma_m).
+/// only as far as a plain return of the range noise `range_noise_m` explains it (MixedEdgeNoise).
 LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegModel& leg,
                     double axis_yaw_hint, const LegFitConfig& config,
                     const SilhouetteEdges& edges = {}, double range_noise_m = 0.0);

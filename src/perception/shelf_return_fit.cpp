@@ -161,10 +161,10 @@ ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
         weights[l][i] = HuberSqrtWeight(std::hypot(r[0], r[1]), config.loss_scale_m);
         // As FitLeg: an outer return that may be a blend keeps its range as far as the noise
         // explains it.
-        weights[l][i] =
-            std::min(weights[l][i], MixedReturnSqrtWeight(r[0], leg.range_sigma_m,
-                                                          leg.mixed.Gap(i, leg.points->size()),
-                                                          config.mixed_edge_share));
+        weights[l][i] = std::min(
+            weights[l][i],
+            MixedReturnSqrtWeight(r[0], std::max(leg.range_sigma_m, config.mixed_min_noise_m),
+                                  leg.mixed.Gap(i, leg.points->size()), config.mixed_edge_share));
       }
       const SilhouetteTerm& sil = leg.silhouette;
       if (sil.sigma_rad > 0.0) {

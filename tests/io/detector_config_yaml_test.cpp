@@ -44,6 +44,7 @@ TEST(DetectorConfigYamlTest, ShippedFileHoldsTheStructDefaults) {
   EXPECT_EQ(read.leg_fit.loss_scale_m, def.leg_fit.loss_scale_m);
   EXPECT_EQ(read.leg_fit.pca_min_anisotropy, def.leg_fit.pca_min_anisotropy);
   EXPECT_EQ(read.leg_fit.mixed_edge_share, def.leg_fit.mixed_edge_share);
+  EXPECT_EQ(read.leg_fit.mixed_min_noise_m, def.leg_fit.mixed_min_noise_m);
   EXPECT_EQ(read.shelf_fit.max_rms_m, def.shelf_fit.max_rms_m);
   EXPECT_EQ(read.evidence.min_confidence, def.evidence.min_confidence);
   EXPECT_EQ(read.evidence.overlap_margin_m, def.evidence.overlap_margin_m);

@@ -97,6 +97,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.leg_fit.mixed_edge_share = -0.1; }},
     {"leg_fit_mixed_share_one", "leg_fit.mixed_edge_share",
      [](auto& c) { c.leg_fit.mixed_edge_share = 1.0; }},
+    {"leg_fit_mixed_noise_negative", "leg_fit.mixed_min_noise_m",
+     [](auto& c) { c.leg_fit.mixed_min_noise_m = -0.001; }},
     {"shelf_fit_loss", "shelf_fit.loss_scale_m", [](auto& c) { c.shelf_fit.loss_scale_m = 0.0; }},
     {"shelf_fit_iterations", "shelf_fit.max_iterations",
      [](auto& c) { c.shelf_fit.max_iterations = 0; }},
