@@ -9,12 +9,11 @@
 // one with `shelfdock eval-layouts --class NAME --seed0 SEED --scenes-per-class 1
 // --dump-failures DIR`.
 //
-// The detector does not meet these targets yet (measured on these seeds at 46fdef5, ten classes
-// with against_wall: right shelf first 97.22 % overall, 92.2-100 % per class; no phantom and no
-// detection on the clutter class; centre / heading p95 7.0 mm / 6.1 mrad at 10 mm; README,
-// eval-layouts), so the target test is disabled: it runs with --gtest_also_run_disabled_tests and
-// must be enabled when the targets are met. CI runs the sweep and checks that it scores every
-// class.
+// The detector does not meet these targets yet (measured on these seeds at 0ad061b: right shelf
+// first 98.33 % overall, 94.5-100 % per class; no phantom and no detection on the clutter class;
+// centre / heading p95 7.0 mm / 6.1 mrad at 10 mm; the README's layout table, eval-layouts), so the
+// target test is disabled: it runs with --gtest_also_run_disabled_tests and must be enabled when
+// the targets are met. CI runs the sweep and checks that it scores every class.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -842,7 +841,8 @@ TEST(LayoutSceneTest, AStrayEchoInsideAShelfIsNoForeignLeg) {
 // misses below the minimum confidence). evidence.build_sigma_m widens each leg's std by the build
 // tolerance for the confidence of a shelf the preset vouches for. Scenes that the detector without
 // it misses: with 4 mm the target first within 5 cm of its design pose and no phantom. The
-// default stays 0 (README: with 3 mm, 5 more phantom scenes in 100000 as-designed ones).
+// default stays 0 (docs/detector_history.md: with 3 mm, 5 more phantom scenes in 100000
+// as-designed ones).
 TEST(LayoutSceneTest, AShelfBuiltOffItsDrawingKeepsItsConfidence) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   sim::LayoutConfig layout = LayoutWithPresets();

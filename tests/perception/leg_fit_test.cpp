@@ -86,7 +86,8 @@ TEST(LegFitTest, NoisyRangesGiveNoBiasAlongTheBeam) {
 // those returns can beat. 10 mm noise, the WLR-716's 1/3 deg beams at a random phase, 1.5-3.5 m
 // (1-5 returns on a leg), 400 draws per shape and range: the RMS error along the beam stays within
 // 1.2x of sqrt(mean(sigma^2 / n)) (measured 0.97-1.08x), so the leg fit is at that bound and the
-// close models' confusions are the noise's, not the fit's (README, "The close models").
+// close models' confusions are the noise's, not the fit's (docs/detector_history.md, "The close
+// models").
 TEST(LegFitTest, TheErrorAlongTheBeamIsTheRangeNoiseOverTheReturns) {
   const LegFitConfig config;
   constexpr double kSigma = 0.01;

@@ -1,11 +1,11 @@
 """scripts/leg_errors.py on generated scenes: fitted legs against the simulated truth.
 
-The README's account of the close-model confusions (1075x883 against 1080x856) rests on this: a
+The account (docs/detector_history.md) of the close-model confusions (1075x883 against 1080x856) rests on this: a
 fitted leg's error along its beam is the range noise over the square root of its returns, nearly
 unbiased. 300 WLR-716 scenes (open, row, aisle; seed0 5001), 10 and 20 mm noise: for every count
 of returns (two or more) with at least 30 legs, the along-beam std lies within 0.75-1.3 times
 sigma / sqrt(returns) (measured 0.87-1.10) and its mean within a third of it; an edge between two
-fitted legs is off by under 15 mm std (9.7-9.9 mm on the README's 7000 scenes).
+fitted legs is off by under 15 mm std (9.7-9.9 mm on the 7000 scenes of docs/detector_history.md).
 """
 import importlib.util
 import subprocess

@@ -1,6 +1,6 @@
 """scripts/model_choice_bound.py on generated scenes: the floor of the close-model confusions.
 
-The README's case that the issue's 99.5 % right first cannot be met on our scenes rests on this
+The case (README, docs/detector_history.md) that the issue's 99.5 % right first cannot be met on our scenes rests on this
 script: from the returns on the target's legs (and their outline edges), the probability that even
 the best test between the 1075x883 and 1080x856 models picks the wrong one. 300 scenes (open,
 row, aisle; the three sensors; seed0 5001). Asserted: the returns alone, without the outline
