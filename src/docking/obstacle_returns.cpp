@@ -10,8 +10,8 @@ ScanReturns PlaceReturns(const geometry::LaserScan& scan, const geometry::Pose2&
   out.points.assign(n, Eigen::Vector2d::Zero());
   out.valid.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
+    if (!scan.HasReturn(i)) continue;
     const double r = scan.ranges[i];
-    if (!std::isfinite(r) || r < scan.range_min || r > scan.range_max) continue;
     const double a = scan.BeamAngle(i);
     out.points[i] = T_frame_lidar * Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
     out.valid[i] = 1;

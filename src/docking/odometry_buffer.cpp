@@ -39,8 +39,8 @@ std::vector<perception::ScanPoint> CompensatedPoints(const geometry::LaserScan& 
   points.reserve(scan.ranges.size());
   const geometry::Pose2 T_lidarref_odom = (odometry.At(t_ref_s) * T_base_lidar).inverse();
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (!scan.HasReturn(i)) continue;
     const double r = scan.ranges[i];
-    if (!std::isfinite(r) || r < scan.range_min || r > scan.range_max) continue;
     const double a = scan.BeamAngle(i);
     const Eigen::Vector2d p_lidar_i(r * std::cos(a), r * std::sin(a));
     const double t_i = scan.stamp + static_cast<double>(i) * scan.time_increment;

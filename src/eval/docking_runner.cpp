@@ -235,8 +235,8 @@ DockingRun RunDocking(const sim::Scenario& scenario,
         const Pose2 T_world_lidar = robot.T_world_base() * T_base_lidar;
         const geometry::LaserScan& scan = *readings.scan;
         for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+          if (!scan.HasReturn(i)) continue;
           const double r = scan.ranges[i];
-          if (!std::isfinite(r)) continue;
           const double a = scan.BeamAngle(i);
           f.scan_world.push_back(T_world_lidar * Eigen::Vector2d(r * std::cos(a), r * std::sin(a)));
         }

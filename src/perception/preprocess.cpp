@@ -33,8 +33,8 @@ std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan) {
       c = c_prev * cos_step - s * sin_step;
       s = s * cos_step + c_prev * sin_step;
     }
+    if (!scan.HasReturn(i)) continue;
     const double r = scan.ranges[i];
-    if (!std::isfinite(r) || r <= 0.0 || r < scan.range_min || r > scan.range_max) continue;
     out.push_back({Eigen::Vector2d(r * c, r * s), r, a, static_cast<int>(i)});
   }
   return out;
