@@ -62,6 +62,7 @@ nlohmann::json DetectionStatsToJson(const perception::DetectionStats& s) {
           {"model_pairs", s.model_pairs},
           {"hypotheses", s.hypotheses},
           {"range_noise_m", s.range_noise_m},
+          {"width_bloom_rad", s.width_bloom_rad},
           {"depth_steps", s.depth_steps},
           {"bridged_steps", s.bridged_steps},
           {"stray_returns", s.stray_returns},

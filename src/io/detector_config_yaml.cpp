@@ -112,6 +112,11 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("leg_width_blur_beams", c.leg_width_blur_beams);
   f.Read("leg_width_blend_beams", c.leg_width_blend_beams);
   f.Read("leg_width_scale_m", c.leg_width_scale_m);
+  f.Read("width_bloom_max_rad", c.width_bloom_max_rad);
+  f.Read("width_bloom_quantile", c.width_bloom_quantile);
+  f.Read("width_bloom_min_objects", c.width_bloom_min_objects);
+  f.Read("width_bloom_max_extent_m", c.width_bloom_max_extent_m);
+  f.Read("width_bloom_min_step_m", c.width_bloom_min_step_m);
   f.Read("blend_max_returns", c.blend_max_returns);
   f.Read("blend_max_step_m", c.blend_max_step_m);
   f.Read("blend_narrow_bias_m", c.blend_narrow_bias_m);

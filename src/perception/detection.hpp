@@ -81,11 +81,13 @@ struct DetectionStats {
   int hypotheses = 0;          ///< points-model pairs fitted and scored (one per pair)
   int completed_sets = 0;      ///< leg sets completed from two candidates (CompleteLegSets)
   double range_noise_m = 0.0;  ///< [m] range noise the scan shows (EstimateRangeNoise; 0: unknown)
-  int depth_steps = 0;         ///< large depth steps with no return between (EstimateEdgeBlending)
-  int bridged_steps = 0;       ///< large depth steps bridged by one mixed return
-  int stray_returns = 0;       ///< lone returns no leg could make at their range (stray echoes:
-                               ///< PreprocessConfig::lone_return_max_beams), not candidates
-  RejectionCounts rejected;    ///< why hypotheses were not returned
+  double width_bloom_rad = 0.0;  ///< [rad] how much wider the scan draws thin objects
+                                 ///< (EstimateWidthBloom; 0: true to their width)
+  int depth_steps = 0;       ///< large depth steps with no return between (EstimateEdgeBlending)
+  int bridged_steps = 0;     ///< large depth steps bridged by one mixed return
+  int stray_returns = 0;     ///< lone returns no leg could make at their range (stray echoes:
+                             ///< PreprocessConfig::lone_return_max_beams), not candidates
+  RejectionCounts rejected;  ///< why hypotheses were not returned
 };
 
 /// What became of one hypothesis (a leg set paired with a model).

@@ -20,6 +20,7 @@
 #include "perception/shelf_evidence.hpp"
 #include "perception/shelf_fit.hpp"
 #include "perception/shelf_return_fit.hpp"
+#include "perception/width_bloom.hpp"
 
 namespace shelfdock::perception {
 namespace {
@@ -524,11 +525,24 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   // 3.1 preprocessing.
   PreprocessOutput pre =
       Preprocess(points, angle_increment_rad, T_lidar_preset, models_, config_.preprocess);
+  {
+    double narrowest_leg = std::numeric_limits<double>::infinity();
+    for (const auto& m : models_) {
+      narrowest_leg = std::min({narrowest_leg, m.leg.length_m, m.leg.width_m});
+    }
+    const EvidenceConfig& e = config_.evidence;
+    pre.width_bloom_rad =
+        EstimateWidthBloom(points, pre.points, pre.spans, angle_increment_rad, narrowest_leg,
+                           e.width_bloom_max_extent_m, e.width_bloom_min_step_m,
+                           e.width_bloom_quantile, e.width_bloom_min_objects, e.width_bloom_max_rad)
+            .bloom_rad;
+  }
   stats.roi_points = pre.roi_points;
   stats.clusters = pre.clusters;
   stats.trailing_removed = pre.trailing_removed;
   stats.leg_candidates = static_cast<int>(pre.candidates.size());
   stats.range_noise_m = pre.range_noise_m;
+  stats.width_bloom_rad = pre.width_bloom_rad;
   stats.depth_steps = pre.edge_blending.steps;
   stats.bridged_steps = pre.edge_blending.bridged;
   stats.stray_returns = pre.stray_returns;

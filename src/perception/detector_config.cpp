@@ -109,6 +109,12 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.leg_width_blur_beams >= 0.0, "evidence.leg_width_blur_beams", ">= 0 (0: off)");
   k.Check(e.leg_width_blend_beams >= 0.0, "evidence.leg_width_blend_beams", ">= 0 (0: off)");
   k.Check(e.leg_width_scale_m > 0.0, "evidence.leg_width_scale_m", "> 0");
+  k.Check(e.width_bloom_max_rad >= 0.0, "evidence.width_bloom_max_rad", ">= 0 (0: off)");
+  k.Check(e.width_bloom_quantile >= 0.0 && e.width_bloom_quantile <= 1.0,
+          "evidence.width_bloom_quantile", "in [0, 1]");
+  k.Check(e.width_bloom_min_objects >= 1, "evidence.width_bloom_min_objects", ">= 1");
+  k.Check(e.width_bloom_max_extent_m > 0.0, "evidence.width_bloom_max_extent_m", "> 0");
+  k.Check(e.width_bloom_min_step_m > 0.0, "evidence.width_bloom_min_step_m", "> 0");
   k.Check(e.blend_max_returns >= 0, "evidence.blend_max_returns", ">= 0 (0: off)");
   k.Check(e.blend_max_step_m > 0.0, "evidence.blend_max_step_m", "> 0");
   k.Check(e.blend_narrow_bias_m >= 0.0, "evidence.blend_narrow_bias_m", ">= 0");

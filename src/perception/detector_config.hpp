@@ -191,6 +191,14 @@ struct EvidenceConfig {
                                           ///< return blends: PreprocessOutput::
                                           ///< blends_every_echo); 0: off
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
+  /// A scanner that blooms (EstimateWidthBloom: every thin object drawn wider by its spot) may
+  /// show legs, and foreign legs, too wide by the scan's estimated bloom times their range.
+  double width_bloom_max_rad = 0.02;      ///< [rad] at most this bloom is granted; 0: off
+  double width_bloom_quantile = 0.1;      ///< [-] quantile of the thin objects' excess width
+  int width_bloom_min_objects = 3;        ///< [-] fewer thin objects clear of their background:
+                                          ///< no bloom granted
+  double width_bloom_max_extent_m = 0.1;  ///< [m] a cluster this long at most is a thin object
+  double width_bloom_min_step_m = 0.1;    ///< [m] ... clear of its background by this much
   /// A leg of at most blend_max_returns returns whose beams either side returned from at most
   /// blend_max_step_m behind it may be a thinner leg blended with its background (MayBeBlend);
   /// a hypothesis on two or more such legs whose legs look narrower than its model's by more

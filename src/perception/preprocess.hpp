@@ -59,6 +59,9 @@ struct PreprocessOutput {
   /// (PreprocessConfig::blend_any_share, blend_any_min_bridged): its thin legs' edge beams
   /// return blends with what stands behind them.
   bool blends_every_echo = false;
+  /// [rad] How much wider than they stand the scan's sensor draws thin objects
+  /// (EstimateWidthBloom; set by the detector, 0 until then).
+  double width_bloom_rad = 0.0;
   int split_candidates = 0;   ///< candidates cut from wider clusters at a depth step
   int stray_returns = 0;      ///< lone returns too narrow for a leg at their range (stray echoes)
   int joined_candidates = 0;  ///< candidates joined from fragments of one leg (noise breaks)

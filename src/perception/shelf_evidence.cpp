@@ -169,7 +169,9 @@ bool IsForeignLeg(const PreprocessOutput& pre, const ClusterSpan& span, SpanRole
   const double range = span.centroid.norm();
   const double seen_width =
       SeenWidth(pre.points[span.begin], pre.points[span.end - 1], range, alpha);
-  if (seen_width > leg_extent + range * alpha + config.leg_width_slack_m) return false;
+  if (seen_width > leg_extent + range * (alpha + pre.width_bloom_rad) + config.leg_width_slack_m) {
+    return false;
+  }
   // Where the map vouches for the shelf, a leg-sized cluster whose outline something nearer cuts
   // (kPartlyHiddenLeg) and whose neighbour in the scan is one of the shelf's own legs
   // (`beside_own_leg`) is taken for what it most often is there: the sliver of a person's leg
@@ -269,6 +271,10 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   ShelfEvidence ev;
   ev.vouched = vouched;
   const double alpha = std::abs(angle_increment_rad);
+  // The bloom is granted only where the map vouches for a shelf: a robot searching without one
+  // (and a scan of a room with no shelf in it) keeps the strict widths, which tell furniture and
+  // people's legs from shelf legs.
+  const double bloom = vouched ? pre.width_bloom_rad : 0.0;
   const auto corners = model.LegCentres();
   std::vector<int> own_spans, excused_spans;
   double width_bias_sum = 0.0;
@@ -301,8 +307,11 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       // nearer beside it) may be wider than its returns: its width is only a lower bound, too
       // narrow says nothing.
       const bool closed = c.edges.before_rad && c.edges.after_rad;
-      width_errors[k] =
-          std::max(0.0, (closed ? std::abs(seen - expected) : seen - expected) - slack);
+      // A blooming scanner draws every thin object wider by its spot (EstimateWidthBloom): up to
+      // that much too wide is the sensor's, not the leg's.
+      double off = seen - expected;
+      if (off > 0.0) off = std::max(0.0, off - bloom * range);
+      width_errors[k] = std::max(0.0, (closed ? std::abs(off) : off) - slack);
       ++width_count;
       // The legs' mean width likewise: closed legs, or legs already too wide. A beam wider than
       // a leg with a background close behind it (a wall, a neighbour's leg) returns one echo
@@ -324,7 +333,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                                     (CloseBehind(c.edges.before_step_m, config.blend_max_step_m) ||
                                      CloseBehind(c.edges.after_step_m, config.blend_max_step_m));
         if (!may_be_blurred) {
-          width_bias_sum += excess;
+          width_bias_sum += excess > 0.0 ? std::max(0.0, excess - bloom * range) : excess;
           beam_sum += beam;
           ++bias_count;
         }

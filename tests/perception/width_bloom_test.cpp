@@ -1,0 +1,114 @@
+// EstimateWidthBloom: how much wider than they stand a scan draws its thin objects.
+#include "perception/width_bloom.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace shelfdock::perception {
+namespace {
+
+constexpr double kAlpha = 0.005817764173314432;  // WLR-716: 1/3 degree
+constexpr double kNarrowestLeg = 0.026;
+constexpr double kMaxBloom = 0.02;
+
+// A scan of a far wall (8 m) with thin objects of `widths_m` at `ranges_m`, each drawn `bloom_rad`
+// wider than it stands, 40 beams apart. Returns the scan's valid returns in beam order (the
+// preprocessed points are the same here) and one span per object.
+struct BloomScene {
+  std::vector<ScanPoint> points;
+  std::vector<ClusterSpan> spans;
+};
+
+BloomScene Scene(const std::vector<double>& widths_m, const std::vector<double>& ranges_m,
+                 double bloom_rad) {
+  BloomScene s;
+  const int n_beams = 40 * static_cast<int>(widths_m.size()) + 40;
+  std::vector<double> range(static_cast<std::size_t>(n_beams), 8.0);
+  for (std::size_t k = 0; k < widths_m.size(); ++k) {
+    // The object's centre at a different fraction of a beam each time (as a scan falls).
+    const double centre = 40.0 * static_cast<double>(k) + 40.0 + std::fmod(0.37 * k, 1.0);
+    const double half = 0.5 * (std::atan2(widths_m[k], ranges_m[k]) + bloom_rad);
+    for (int b = static_cast<int>(centre) - 20; b < static_cast<int>(centre) + 20; ++b) {
+      if (std::abs((b - centre) * kAlpha) <= half) range[static_cast<std::size_t>(b)] = ranges_m[k];
+    }
+  }
+  for (int b = 0; b < n_beams; ++b) {
+    const double a = b * kAlpha;
+    const double r = range[static_cast<std::size_t>(b)];
+    s.points.push_back({r * Eigen::Vector2d(std::cos(a), std::sin(a)), r, a, b});
+  }
+  // Spans: runs of one range.
+  for (std::size_t i = 0; i < s.points.size();) {
+    std::size_t j = i + 1;
+    while (j < s.points.size() && s.points[j].range == s.points[i].range) ++j;
+    ClusterSpan span{i, j, Eigen::Vector2d::Zero(), 0.0};
+    for (std::size_t q = i; q < j; ++q) span.centroid += s.points[q].p / static_cast<double>(j - i);
+    span.extent_m = (s.points[j - 1].p - s.points[i].p).norm();
+    s.spans.push_back(span);
+    i = j;
+  }
+  return s;
+}
+
+WidthBloomEstimate Estimate(const BloomScene& s, int min_objects = 3) {
+  return EstimateWidthBloom(s.points, s.points, s.spans, kAlpha, kNarrowestLeg, 0.2, 0.1, 0.1,
+                            min_objects, kMaxBloom);
+}
+
+const std::vector<double> kRanges = {1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 1.8, 2.7, 3.3, 3.8};
+
+TEST(WidthBloomTest, ThinObjectsDrawnTrueGrantNoBloom) {
+  // Legs of the thinnest model (26 mm) and a few 40 mm ones, as they stand: the estimate stays
+  // within half a beam's angle of 0 (a thin object spans its angle plus up to one beam).
+  const BloomScene s =
+      Scene({0.026, 0.026, 0.04, 0.026, 0.04, 0.026, 0.026, 0.04, 0.026, 0.026}, kRanges, 0.0);
+  const WidthBloomEstimate e = Estimate(s);
+  EXPECT_EQ(e.objects, 10);  // the wall pieces between are longer than 0.2 m
+  EXPECT_LE(e.bloom_rad, 0.5 * kAlpha);
+}
+
+TEST(WidthBloomTest, ObjectsDrawnWiderGiveTheirBloom) {
+  // 26-40 mm legs each drawn 12 mrad wider (a 15 mrad spot's bloom): a thin object spans its
+  // angle to within a beam either way, so the estimate (its spanned beams less half a beam) lies
+  // within a beam and a half below the bloom and half a beam above it.
+  const double bloom = 0.012;
+  const BloomScene s =
+      Scene({0.026, 0.04, 0.026, 0.04, 0.026, 0.026, 0.04, 0.026, 0.04, 0.026}, kRanges, bloom);
+  const WidthBloomEstimate e = Estimate(s);
+  EXPECT_EQ(e.objects, 10);
+  EXPECT_GT(e.bloom_rad, bloom - 1.5 * kAlpha);
+  EXPECT_LT(e.bloom_rad, bloom + 0.5 * kAlpha);
+  // Capped: a scan drawing things 40 mrad wider is granted kMaxBloom at most.
+  EXPECT_DOUBLE_EQ(
+      Estimate(Scene({0.026, 0.026, 0.026, 0.026}, {2.0, 2.5, 3.0, 3.5}, 0.04)).bloom_rad,
+      kMaxBloom);
+}
+
+TEST(WidthBloomTest, AThinObjectDrawnTrueOrTooFewObjectsGrantNothing) {
+  // Wide posts (60 mm) look like bloomed legs, but one 20 mm post drawn true among nine of them
+  // is the 10 % quantile: nothing is granted.
+  std::vector<double> widths(9, 0.06);
+  widths.push_back(0.02);
+  EXPECT_LE(Estimate(Scene(widths, kRanges, 0.0)).bloom_rad, 0.5 * kAlpha);
+  // Two thin objects clear of their background are too few to tell a sensor by.
+  const BloomScene two = Scene({0.026, 0.026}, {2.0, 3.0}, 0.012);
+  EXPECT_EQ(Estimate(two).objects, 2);
+  EXPECT_EQ(Estimate(two).bloom_rad, 0.0);
+  EXPECT_GT(Estimate(two, 2).bloom_rad, 0.0);
+}
+
+TEST(WidthBloomTest, AnObjectWithSomethingNearerBesideItDoesNotCount) {
+  // The last object's next beam out returns from nearer (an occluder): its outline may be cut,
+  // so its width says nothing.
+  BloomScene s = Scene({0.026, 0.026, 0.026, 0.026}, {2.0, 2.5, 3.0, 3.5}, 0.012);
+  const ClusterSpan& last = s.spans[s.spans.size() - 2];
+  ScanPoint& beside = s.points[last.end];
+  beside.range = 1.0;
+  beside.p = beside.range * Eigen::Vector2d(std::cos(beside.angle), std::sin(beside.angle));
+  EXPECT_EQ(Estimate(s).objects, 3);
+}
+
+}  // namespace
+}  // namespace shelfdock::perception

@@ -1,0 +1,117 @@
+"""The detector on the independent scene generator (scripts/independent_scenes.py), a generator
+written from the specification alone, without the repository's own simulator.
+
+It draws a modest fixed-seed set (30 scenes per class) and asserts only what must hold on ANY
+realistic generator: no phantom shelf in any scene, no detection at all in clutter scenes,
+and that reading the scan's bloom finds what strict leg widths miss (the real target,
+99.5 %, is reported by the script, not asserted).  It also checks the generator itself: its
+scenes are physically possible and its sensor model returns what its docstring says.
+
+The module is located as conftest.py does (SHELFDOCK_PYTHON_DIR, else build/python); the
+generator is loaded by path from the source tree.
+"""
+import importlib.util
+import math
+
+import numpy as np
+import pytest
+
+SEED = 7
+PER_CLASS = 30
+
+
+@pytest.fixture(scope="module")
+def gen(source_dir):
+    path = source_dir / "scripts" / "independent_scenes.py"
+    spec = importlib.util.spec_from_file_location("independent_scenes", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.fixture(scope="module")
+def records(gen, models):
+    pytest.importorskip("shelfdock")
+    return gen.run(str(models), SEED, PER_CLASS, jobs=1)
+
+
+def test_sensor_model_single_surface_and_edges(gen):
+    """One surface returns its range; a depth edge blends only when the depths are close,
+    and a weak sliver of a near surface is not seen in front of a far one."""
+    sig = 0.1
+    K = 15
+    one = gen.discriminate(np.full((1, K), 2.0), np.full((1, K), 50.0 / K),
+                           np.zeros((1, K), int), sig)[0]
+    assert abs(one - 2.0) < 1e-6
+    # near surface on 5 of 15 sub-rays, far one 5 cm behind: a blend between the two
+    R = np.full((1, K), 2.05)
+    R[0, :5] = 2.0
+    A = np.full((1, K), 0.2)          # weak: neither part alone is far above the threshold
+    own = (R > 2.0).astype(int)
+    r = gen.discriminate(R, A, own, sig)[0]
+    assert 2.0 < r < 2.05
+    # far one 2 m behind and the near sliver below the threshold: the far surface, unblended
+    R = np.full((1, K), 4.0)
+    R[0, :1] = 2.0
+    A = np.full((1, K), 0.5)
+    r = gen.discriminate(R, A, (R > 2.0).astype(int), sig)[0]
+    assert abs(r - 4.0) < 1e-3
+    # nothing over the threshold: no return
+    r = gen.discriminate(np.full((1, K), 3.0), np.full((1, K), 0.5 / K), np.zeros((1, K), int),
+                         sig)[0]
+    assert math.isnan(r)
+
+
+def test_scenes_are_physically_possible(gen):
+    bad = []
+    for cls in gen.CLASSES:
+        for i in range(PER_CLASS):
+            sc = gen.generate_scene(cls, SEED, i)
+            problems = gen.check_physical(sc)
+            if problems:
+                bad.append((cls, i, problems[:2]))
+            if cls == "clutter":
+                assert sc["target"] is None and not sc["shelves"]
+            else:
+                assert len(sc["legs_seen"]) == 4
+    assert not bad, bad
+
+
+def test_scenes_are_reproducible(gen):
+    a = gen.generate_scene("aisle", SEED, 3)
+    b = gen.generate_scene("aisle", SEED, 3)
+    np.testing.assert_array_equal(a["ranges"], b["ranges"])
+    assert a["preset"] == b["preset"]
+
+
+def test_no_phantom_anywhere(gen, records):
+    phantoms = [(r["cls"], r["index"], r["detections"]) for r in records if r["phantom"]]
+    assert not phantoms, phantoms
+
+
+def test_no_detection_in_clutter(gen, records):
+    hits = [(r["index"], r["detections"]) for r in records
+            if r["cls"] == "clutter" and r["n_det"] > 0]
+    assert not hits, hits
+
+
+def test_the_scans_bloom_read_finds_what_strict_widths_miss(gen, records, models, source_dir, tmp_path):
+    """This generator's receiver reports a beam's first echo above a threshold from a finite spot,
+    so its legs look 15-40 mm wider than they stand. The detector reads that bloom off the scan's
+    thin objects (evidence.width_bloom_max_rad); with it off, the legs' width evidence takes most
+    shelves for posts. Seed 7, 30 scenes per class: right first must gain at least 10 points of
+    the findable scenes, lose no scene found without it, and add no phantom (the target, 99.5 %,
+    is not met on this generator: 75.9 % on seed 1 with 200 per class; see README)."""
+    config = (source_dir / "config" / "detector.yaml").read_text()
+    assert "  width_bloom_max_rad: 0.02" in config
+    strict = tmp_path / "strict_widths.yaml"
+    strict.write_text(config.replace("  width_bloom_max_rad: 0.02", "  width_bloom_max_rad: 0.0"))
+    without = gen.run(str(models), SEED, PER_CLASS, params=str(strict), jobs=1)
+    with_rows, without_rows = gen.summarise(records), gen.summarise(without)
+    print("\nbloom read:\n" + gen.format_table(with_rows))
+    print("strict widths:\n" + gen.format_table(without_rows))
+    assert with_rows["overall"]["findable"] >= 0.6 * len(records)
+    assert with_rows["overall"]["right_pct"] >= without_rows["overall"]["right_pct"] + 10.0
+    lost = [(a["cls"], a["index"]) for a, b in zip(records, without)
+            if b["outcome"] == "right" and a["outcome"] != "right"]
+    assert len(lost) <= 1, lost
