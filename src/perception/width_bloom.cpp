@@ -37,7 +37,8 @@ WidthBloomEstimate EstimateWidthBloom(const std::vector<ScanPoint>& raw_points,
   const double alpha = std::abs(angle_increment_rad);
   std::vector<double> excess;
   for (const ClusterSpan& span : spans) {
-    if (span.size() == 0 || span.extent_m > max_extent_m) continue;
+    // A lone return tells nothing: a stray echo in mid-air or a far thin object one beam hit.
+    if (span.size() < 2 || span.extent_m > max_extent_m) continue;
     const ScanPoint& first = points[span.begin];
     const ScanPoint& last = points[span.end - 1];
     if (!ClearBehind(raw_points, first, -1, min_step_m) ||
