@@ -165,7 +165,9 @@ bool IsForeignLeg(const PreprocessOutput& pre, const ClusterSpan& span, SpanRole
   }
   // Leg-sized also across the view: a person's leg (10-14 cm) seen side-on can be short in
   // extent when only a few beams hit it, but its seen width gives it away. A foreign shelf
-  // leg is no wider than the widest silhouette of this model's leg plus the beam blur.
+  // leg is no wider than the widest silhouette of this model's leg plus the beam blur and the
+  // scan's bloom (EstimateWidthBloom: a blooming scanner draws a neighbour's leg wider too, and
+  // it must still count against a phantom standing over it).
   const double range = span.centroid.norm();
   const double seen_width =
       SeenWidth(pre.points[span.begin], pre.points[span.end - 1], range, alpha);
