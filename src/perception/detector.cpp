@@ -530,12 +530,9 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     for (const auto& m : models_) {
       narrowest_leg = std::min({narrowest_leg, m.leg.length_m, m.leg.width_m});
     }
-    const EvidenceConfig& e = config_.evidence;
-    pre.width_bloom_rad =
-        EstimateWidthBloom(points, pre.points, pre.spans, angle_increment_rad, narrowest_leg,
-                           e.width_bloom_max_extent_m, e.width_bloom_min_step_m,
-                           e.width_bloom_quantile, e.width_bloom_min_objects, e.width_bloom_max_rad)
-            .bloom_rad;
+    pre.width_bloom_rad = EstimateWidthBloom(points, pre.points, pre.spans, angle_increment_rad,
+                                             narrowest_leg, config_.evidence)
+                              .bloom_rad;
   }
   stats.roi_points = pre.roi_points;
   stats.clusters = pre.clusters;

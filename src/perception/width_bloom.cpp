@@ -30,19 +30,18 @@ WidthBloomEstimate EstimateWidthBloom(const std::vector<ScanPoint>& raw_points,
                                       const std::vector<ScanPoint>& points,
                                       const std::vector<ClusterSpan>& spans,
                                       double angle_increment_rad, double narrowest_leg_m,
-                                      double max_extent_m, double min_step_m, double quantile,
-                                      int min_objects, double max_bloom_rad) {
+                                      const EvidenceConfig& config) {
   WidthBloomEstimate out;
-  if (max_bloom_rad <= 0.0) return out;
+  if (config.width_bloom_max_rad <= 0.0) return out;
   const double alpha = std::abs(angle_increment_rad);
   std::vector<double> excess;
   for (const ClusterSpan& span : spans) {
     // A lone return tells nothing: a stray echo in mid-air or a far thin object one beam hit.
-    if (span.size() < 2 || span.extent_m > max_extent_m) continue;
+    if (span.size() < 2 || span.extent_m > config.width_bloom_max_extent_m) continue;
     const ScanPoint& first = points[span.begin];
     const ScanPoint& last = points[span.end - 1];
-    if (!ClearBehind(raw_points, first, -1, min_step_m) ||
-        !ClearBehind(raw_points, last, +1, min_step_m)) {
+    if (!ClearBehind(raw_points, first, -1, config.width_bloom_min_step_m) ||
+        !ClearBehind(raw_points, last, +1, config.width_bloom_min_step_m)) {
       continue;
     }
     const double range = span.centroid.norm();
@@ -57,11 +56,11 @@ WidthBloomEstimate EstimateWidthBloom(const std::vector<ScanPoint>& raw_points,
     excess.push_back(seen - 0.5 * alpha - std::atan2(narrowest_leg_m, range));
   }
   out.objects = static_cast<int>(excess.size());
-  if (out.objects < std::max(min_objects, 1)) return out;
-  const auto k = static_cast<std::size_t>(
-      std::floor(std::clamp(quantile, 0.0, 1.0) * static_cast<double>(excess.size() - 1)));
+  if (out.objects < std::max(config.width_bloom_min_objects, 1)) return out;
+  const auto k = static_cast<std::size_t>(std::floor(
+      std::clamp(config.width_bloom_quantile, 0.0, 1.0) * static_cast<double>(excess.size() - 1)));
   std::nth_element(excess.begin(), excess.begin() + static_cast<std::ptrdiff_t>(k), excess.end());
-  out.bloom_rad = std::clamp(excess[k], 0.0, max_bloom_rad);
+  out.bloom_rad = std::clamp(excess[k], 0.0, config.width_bloom_max_rad);
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "perception/detector_config.hpp"
 #include "perception/preprocess.hpp"
 
 namespace shelfdock::perception {
@@ -18,11 +19,12 @@ struct WidthBloomEstimate {
 /// 80-100 mm wide to a scanner with a 15 mrad spot); a receiver that needs a good share of the
 /// spot on a surface draws it true within a beam. Which one a scan comes from is read off its
 /// thinnest objects: for each cluster of two returns or more (a lone return may be a stray echo)
-/// and at most `max_extent_m` whose first and last returns stand at least `min_step_m` in front
-/// of the next returns out on both sides (a leg or a post clear of what lies behind it), its seen
-/// angle (the beams it spans, less half a beam of quantisation) minus the angle `narrowest_leg_m`
-/// (the thinnest leg of any model) subtends at its range; the estimate is the `quantile` of those
-/// over the scan, at least 0, at most `max_bloom_rad`. One thin post or leg drawn true anywhere in
+/// and at most EvidenceConfig::width_bloom_max_extent_m whose first and last returns stand at
+/// least width_bloom_min_step_m in front of the next returns out on both sides (a leg or a post
+/// clear of what lies behind it), its seen angle (the beams it spans, less half a beam of
+/// quantisation) minus the angle `narrowest_leg_m` (the thinnest leg of any model) subtends at
+/// its range; the estimate is the width_bloom_quantile of those over the scan, at least 0, at
+/// most width_bloom_max_rad (0: off). One thin post or leg drawn true anywhere in
 /// the scan pins it near 0, so a sensor that draws objects true keeps the strict width checks;
 /// fewer than `min_objects` such objects: 0. `raw_points` are the scan's valid returns in beam
 /// order (ScanToPoints), `points` and `spans` the preprocessed ones (PreprocessOutput), whose Eq. 1
@@ -31,7 +33,6 @@ WidthBloomEstimate EstimateWidthBloom(const std::vector<ScanPoint>& raw_points,
                                       const std::vector<ScanPoint>& points,
                                       const std::vector<ClusterSpan>& spans,
                                       double angle_increment_rad, double narrowest_leg_m,
-                                      double max_extent_m, double min_step_m, double quantile,
-                                      int min_objects, double max_bloom_rad);
+                                      const EvidenceConfig& config);
 
 }  // namespace shelfdock::perception

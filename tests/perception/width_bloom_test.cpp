@@ -53,8 +53,10 @@ BloomScene Scene(const std::vector<double>& widths_m, const std::vector<double>&
 }
 
 WidthBloomEstimate Estimate(const BloomScene& s, int min_objects = 3) {
-  return EstimateWidthBloom(s.points, s.points, s.spans, kAlpha, kNarrowestLeg, 0.2, 0.1, 0.1,
-                            min_objects, kMaxBloom);
+  EvidenceConfig config;  // the defaults: 0.1 m at most, clear by 0.1 m, the 10 % quantile
+  config.width_bloom_min_objects = min_objects;
+  config.width_bloom_max_rad = kMaxBloom;
+  return EstimateWidthBloom(s.points, s.points, s.spans, kAlpha, kNarrowestLeg, config);
 }
 
 const std::vector<double> kRanges = {1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 1.8, 2.7, 3.3, 3.8};
@@ -82,9 +84,10 @@ TEST(WidthBloomTest, ObjectsDrawnWiderGiveTheirBloom) {
   EXPECT_EQ(e.objects, 10);  // bloomed, every one spans two beams or more
   EXPECT_GT(e.bloom_rad, bloom - 1.5 * kAlpha);
   EXPECT_LT(e.bloom_rad, bloom + 0.5 * kAlpha);
-  // Capped: a scan drawing things 40 mrad wider is granted kMaxBloom at most.
+  // Capped: a scan drawing things 25 mrad wider is granted kMaxBloom at most (near objects,
+  // so that they stay within the 0.1 m of a thin object).
   EXPECT_DOUBLE_EQ(
-      Estimate(Scene({0.026, 0.026, 0.026, 0.026}, {2.0, 2.5, 3.0, 3.5}, 0.04)).bloom_rad,
+      Estimate(Scene({0.026, 0.026, 0.026, 0.026}, {1.5, 1.8, 2.0, 2.3}, 0.025)).bloom_rad,
       kMaxBloom);
 }
 
