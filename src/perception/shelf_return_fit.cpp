@@ -8,6 +8,7 @@
 #include <ceres/tiny_solver_autodiff_function.h>
 
 #include "geometry/angle.hpp"
+#include "perception/leg_fit.hpp"
 #include "perception/leg_ray_residual.hpp"
 #include "perception/leg_silhouette.hpp"
 #include "perception/mixed_returns.hpp"
@@ -163,7 +164,7 @@ ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
         // explains it.
         weights[l][i] = std::min(
             weights[l][i],
-            MixedReturnSqrtWeight(r[0], std::max(leg.range_sigma_m, config.mixed_min_noise_m),
+            MixedReturnSqrtWeight(r[0], MixedEdgeNoise(leg.range_sigma_m, config),
                                   leg.mixed.Gap(i, leg.points->size()), config.mixed_edge_share));
       }
       const SilhouetteTerm& sil = leg.silhouette;
