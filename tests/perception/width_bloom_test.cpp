@@ -2,6 +2,7 @@
 #include "perception/width_bloom.hpp"
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -52,9 +53,9 @@ BloomScene Scene(const std::vector<double>& widths_m, const std::vector<double>&
   return s;
 }
 
-WidthBloomEstimate Estimate(const BloomScene& s, int min_objects = 3) {
-  EvidenceConfig config;  // the defaults: 0.1 m at most, clear by 0.1 m, the 10 % quantile
-  config.width_bloom_min_objects = min_objects;
+WidthBloomEstimate Estimate(const BloomScene& s, std::optional<int> min_objects = std::nullopt) {
+  EvidenceConfig config;  // the defaults: 0.1 m at most, clear by 0.1 m, the 10 % quantile, 2
+  if (min_objects) config.width_bloom_min_objects = *min_objects;
   config.width_bloom_max_rad = kMaxBloom;
   return EstimateWidthBloom(s.points, s.points, s.spans, kAlpha, kNarrowestLeg, config);
 }
@@ -98,11 +99,15 @@ TEST(WidthBloomTest, AThinObjectDrawnTrueOrTooFewObjectsGrantNothing) {
   EXPECT_GT(Estimate(Scene(widths, kRanges, 0.0)).bloom_rad, 0.5 * kAlpha);
   widths[0] = 0.02;
   EXPECT_LE(Estimate(Scene(widths, kRanges, 0.0)).bloom_rad, 0.5 * kAlpha);
-  // Two thin objects clear of their background are too few to tell a sensor by.
+  // One thin object clear of its background is too few to tell a sensor by (a stray pair of
+  // returns, a bracket); two are enough by default, and a stricter setting refuses them.
+  const BloomScene one = Scene({0.026}, {2.0}, 0.012);
+  EXPECT_EQ(Estimate(one).objects, 1);
+  EXPECT_EQ(Estimate(one).bloom_rad, 0.0);
   const BloomScene two = Scene({0.026, 0.026}, {2.0, 3.0}, 0.012);
   EXPECT_EQ(Estimate(two).objects, 2);
-  EXPECT_EQ(Estimate(two).bloom_rad, 0.0);
-  EXPECT_GT(Estimate(two, 2).bloom_rad, 0.0);
+  EXPECT_GT(Estimate(two).bloom_rad, 0.0);
+  EXPECT_EQ(Estimate(two, 3).bloom_rad, 0.0);
 }
 
 TEST(WidthBloomTest, AnObjectWithSomethingNearerBesideItDoesNotCount) {
