@@ -114,6 +114,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("leg_width_scale_m", c.leg_width_scale_m);
   f.Read("width_bloom_max_rad", c.width_bloom_max_rad);
   f.Read("width_bloom_quantile", c.width_bloom_quantile);
+  f.Read("width_bloom_order_share", c.width_bloom_order_share);
   f.Read("width_bloom_min_objects", c.width_bloom_min_objects);
   f.Read("width_bloom_max_extent_m", c.width_bloom_max_extent_m);
   f.Read("width_bloom_min_step_m", c.width_bloom_min_step_m);

@@ -193,8 +193,10 @@ struct EvidenceConfig {
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
   /// A scanner that blooms (EstimateWidthBloom: every thin object drawn wider by its spot) may
   /// show legs, and foreign legs, too wide by the scan's estimated bloom times their range.
-  double width_bloom_max_rad = 0.02;  ///< [rad] at most this bloom is granted; 0: off
-  double width_bloom_quantile = 0.1;  ///< [-] quantile of the thin objects' excess width
+  double width_bloom_max_rad = 0.02;     ///< [rad] at most this bloom is granted; 0: off
+  double width_bloom_quantile = 0.1;     ///< [-] quantile of the thin objects' excess width
+  double width_bloom_order_share = 0.5;  ///< [-] share of that quantile's expected shortfall from
+                                         ///< beam quantisation added back (EstimateWidthBloom)
   // Two, not three: a shelf against a wall, behind a box or beside a person often shows only two
   // legs clear of what lies behind them, and then its blooming legs failed the width checks
   // (independent scene generator, seeds 1 / 1001: 90.4 / 90.2 -> 94.9 / 95.0 % right first; the

@@ -60,7 +60,19 @@ WidthBloomEstimate EstimateWidthBloom(const std::vector<ScanPoint>& raw_points,
   const auto k = static_cast<std::size_t>(std::floor(
       std::clamp(config.width_bloom_quantile, 0.0, 1.0) * static_cast<double>(excess.size() - 1)));
   std::nth_element(excess.begin(), excess.begin() + static_cast<std::ptrdiff_t>(k), excess.end());
-  out.bloom_rad = std::clamp(excess[k], 0.0, config.width_bloom_max_rad);
+  // Where the scan's beams fall on an object moves its excess by up to a beam either way; the
+  // quantile is an order statistic of n such values, so it sits lower the more objects there are:
+  // the k-th smallest of n values spread evenly over one beam lies (0.5 - (k + 1) / (n + 1)) of a
+  // beam below their middle (a sixth of a beam for the smaller of two, 0.41 for the smallest of
+  // ten). width_bloom_order_share of that is added back. The real spread is wider than one beam,
+  // so even all of it leaves the estimate lower than one object's (WidthBloomTest); half, since
+  // objects wider than the thinnest leg already raise the quantile (independent scene generator
+  // seeds 1 / 1001: 94.9 / 95.0 -> 95.8 / 95.6 % right first, bloom.yaml 94.0 -> 95.6 %; all of
+  // it: 96.0 / 95.7 % and 96.4 %, but two phantom scenes more in the default sensors' 100000).
+  const double n = static_cast<double>(excess.size());
+  const double order_bias =
+      alpha * (0.5 - (static_cast<double>(k) + 1.0) / (n + 1.0)) * config.width_bloom_order_share;
+  out.bloom_rad = std::clamp(excess[k] + order_bias, 0.0, config.width_bloom_max_rad);
   return out;
 }
 

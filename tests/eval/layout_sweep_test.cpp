@@ -703,7 +703,10 @@ TEST(LayoutSceneTest, ANeighboursLegOnAPhantomsEdgeLineCountsAsInside) {
 // spacings too wide such a leg does not count in the mean where the map vouches for the shelf:
 // nothing more than 5 cm from a true shelf is returned in any of them, and in aisle 60358 the
 // round-legged target is returned first, within 2 cm; with the rule off (0) each returns its
-// phantom first.
+// phantom first. (Row 220999 still shows no phantom with the rule; without it, since the
+// twenty-first session's evidence.width_bloom_order_share, its phantom (a 1075x883 on round legs)
+// falls at a confidence of 0.50 just below the bar with a 1.3 mrad bloom read, so it tells nothing
+// about this rule and is checked for no phantom only.)
 TEST(LayoutSceneTest, ALegBlurredWiderByItsBackgroundDoesNotSkewTheLegsMeanWidth) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   perception::DetectorConfig off;
@@ -711,8 +714,13 @@ TEST(LayoutSceneTest, ALegBlurredWiderByItsBackgroundDoesNotSkewTheLegsMeanWidth
   const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
       {sim::LayoutClass::kAisle, 60358},
       {sim::LayoutClass::kAisle, 220873},
-      {sim::LayoutClass::kRoundNoisy, 180905},
-      {sim::LayoutClass::kRow, 220999}};
+      {sim::LayoutClass::kRoundNoisy, 180905}};
+  {
+    SCOPED_TRACE(220999);
+    const auto r = RunSweep(models, OneScene(sim::LayoutClass::kRow, 220999), {});
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_EQ(r[0].phantoms, 0);
+  }
   for (const auto& [layout_class, seed] : scenes) {
     SCOPED_TRACE(seed);
     const auto r = ExpectPhantomOnlyWithout(models, OneScene(layout_class, seed), off);
