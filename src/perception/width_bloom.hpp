@@ -23,8 +23,9 @@ struct WidthBloomEstimate {
 /// least width_bloom_min_step_m in front of the next returns out on both sides (a leg or a post
 /// clear of what lies behind it), its seen angle (the beams it spans, less half a beam of
 /// quantisation) minus the angle `narrowest_leg_m` (the thinnest leg of any model) subtends at
-/// its range; the estimate is the width_bloom_quantile of those over the scan, at least 0, at
-/// most width_bloom_max_rad (0: off). One thin post or leg drawn true anywhere in
+/// its range; the estimate is the width_bloom_quantile of those over the scan, raised by
+/// width_bloom_order_share of that order statistic's expected shortfall from beam quantisation,
+/// at least 0, at most width_bloom_max_rad (0: off). One thin post or leg drawn true anywhere in
 /// the scan pins it near 0, so a sensor that draws objects true keeps the strict width checks;
 /// fewer than `min_objects` such objects: 0. `raw_points` are the scan's valid returns in beam
 /// order (ScanToPoints), `points` and `spans` the preprocessed ones (PreprocessOutput), whose Eq. 1
