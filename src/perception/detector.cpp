@@ -501,7 +501,7 @@ double ResolveHeading(double yaw_rad, double reference_rad, double period_rad) {
 }
 
 Detector::Detector(std::vector<geometry::ShelfModel> models, DetectorConfig config)
-    : models_(std::move(models)), config_(config) {
+    : models_(std::move(models)), config_(config), narrowest_leg_m_(NarrowestLegSection(models_)) {
   if (models_.empty()) throw std::invalid_argument("models: at least one shelf model is needed");
   if (const auto v = FindConfigViolation(config_)) {
     throw std::invalid_argument(v->key + ": must be " + v->requirement);
@@ -525,15 +525,9 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   // 3.1 preprocessing.
   PreprocessOutput pre =
       Preprocess(points, angle_increment_rad, T_lidar_preset, models_, config_.preprocess);
-  {
-    double narrowest_leg = std::numeric_limits<double>::infinity();
-    for (const auto& m : models_) {
-      narrowest_leg = std::min({narrowest_leg, m.leg.length_m, m.leg.width_m});
-    }
-    pre.width_bloom_rad = EstimateWidthBloom(points, pre.points, pre.spans, angle_increment_rad,
-                                             narrowest_leg, config_.evidence)
-                              .bloom_rad;
-  }
+  pre.width_bloom_rad = EstimateWidthBloom(points, pre.points, pre.spans, angle_increment_rad,
+                                           narrowest_leg_m_, config_.evidence)
+                            .bloom_rad;
   stats.roi_points = pre.roi_points;
   stats.clusters = pre.clusters;
   stats.trailing_removed = pre.trailing_removed;

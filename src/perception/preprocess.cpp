@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "perception/depth_step.hpp"
 #include "perception/range_noise.hpp"
@@ -146,6 +147,12 @@ int RemoveTrailingPoints(std::vector<ScanPoint>& pts, double angle_increment_rad
   return removed;
 }
 
+double NarrowestLegSection(const std::vector<geometry::ShelfModel>& models) {
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (const auto& m : models) narrowest = std::min({narrowest, m.leg.width_m, m.leg.length_m});
+  return narrowest;
+}
+
 double MaxLegExtent(const std::vector<geometry::ShelfModel>& models, const PreprocessConfig& config,
                     double range_noise_m) {
   double max_extent = 0.0;
@@ -181,10 +188,8 @@ ProtrusionLimits SurfaceTestLimits(const PreprocessConfig& config, double range_
 // Beams a leg of the models' narrowest section spans at `centroid`'s range.
 double BeamsAcrossSmallestLeg(const Eigen::Vector2d& centroid, double angle_increment_rad,
                               const std::vector<geometry::ShelfModel>& models) {
-  double min_width = models.front().leg.width_m;
-  for (const auto& m : models) min_width = std::min({min_width, m.leg.width_m, m.leg.length_m});
   const double spacing = std::max(centroid.norm() * std::abs(angle_increment_rad), 1e-6);
-  return min_width / spacing;
+  return NarrowestLegSection(models) / spacing;
 }
 
 // True when the two beams on each side of `beam` returned from one surface there (each pair
@@ -192,10 +197,8 @@ double BeamsAcrossSmallestLeg(const Eigen::Vector2d& centroid, double angle_incr
 // clean. A thin leg seen by a sensor that blends its edge beams with what stands behind has a
 // blend beside it, off the surface.
 bool OnSurfaceBothSides(const std::vector<ScanPoint>& points, int beam, double flat_m) {
-  const auto it = std::lower_bound(points.begin(), points.end(), beam,
-                                   [](const ScanPoint& p, int b) { return p.beam < b; });
-  if (it == points.end() || it->beam != beam) return false;
-  const auto k = static_cast<std::size_t>(it - points.begin());
+  const std::size_t k = IndexOfBeam(points, beam);
+  if (k == points.size() || points[k].beam != beam) return false;
   auto flat = [&](std::size_t a, std::size_t b) {
     return points[a].beam + 1 == points[b].beam &&
            std::abs(points[a].range - points[b].range) < flat_m;

@@ -91,6 +91,10 @@ double TrailingAngle(double range_far_m, double range_near_m, double alpha_rad);
 int RemoveTrailingPoints(std::vector<ScanPoint>& points, double angle_increment_rad,
                          const PreprocessConfig& config);
 
+/// The narrowest section of any leg of `models` [m] (the smaller of a leg's two sides, the
+/// diameter of a round one); +infinity for no models.
+double NarrowestLegSection(const std::vector<geometry::ShelfModel>& models);
+
 /// The widest a leg cluster may be [m]: the largest leg diagonal of `models` plus
 /// leg_extent_margin_m, or plus leg_extent_noise_sigmas * sqrt 2 * range_noise_m when that is
 /// more (range noise stretches a leg's returns along the beams).

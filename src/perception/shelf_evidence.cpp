@@ -141,6 +141,13 @@ double ObjectPointWeight(const ShelfEvidence& ev, const EvidenceConfig& config) 
   return ev.legs_seen >= 4 || ev.legs_occluded > 0 || ev.vouched ? config.object_point_weight : 1.0;
 }
 
+// A leg's width excess [m] (seen less expected) with a blooming scanner's share taken off
+// (EstimateWidthBloom: every thin object drawn wider by up to `bloom_m` at its range): a leg too
+// wide by at most that is the sensor's; one too narrow keeps its excess.
+double LessBloom(double excess_m, double bloom_m) {
+  return excess_m > 0.0 ? std::max(0.0, excess_m - bloom_m) : excess_m;
+}
+
 // The foreign legs inside that count against the free space. A phantom made of two neighbours'
 // legs skips the legs between them, two or more inside it; one leg-sized cluster inside a shelf
 // whose four legs its own returns place, where the map says a shelf stands, is most often a
@@ -309,10 +316,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       // nearer beside it) may be wider than its returns: its width is only a lower bound, too
       // narrow says nothing.
       const bool closed = c.edges.before_rad && c.edges.after_rad;
-      // A blooming scanner draws every thin object wider by its spot (EstimateWidthBloom): up to
-      // that much too wide is the sensor's, not the leg's.
-      double off = seen - expected;
-      if (off > 0.0) off = std::max(0.0, off - bloom * range);
+      const double off = LessBloom(seen - expected, bloom * range);
       width_errors[k] = std::max(0.0, (closed ? std::abs(off) : off) - slack);
       ++width_count;
       // The legs' mean width likewise: closed legs, or legs already too wide. A beam wider than
@@ -335,7 +339,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                                     (CloseBehind(c.edges.before_step_m, config.blend_max_step_m) ||
                                      CloseBehind(c.edges.after_step_m, config.blend_max_step_m));
         if (!may_be_blurred) {
-          width_bias_sum += excess > 0.0 ? std::max(0.0, excess - bloom * range) : excess;
+          width_bias_sum += LessBloom(excess, bloom * range);
           beam_sum += beam;
           ++bias_count;
         }

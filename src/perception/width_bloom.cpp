@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "perception/scan_point.hpp"
+
 namespace shelfdock::perception {
 namespace {
 
@@ -15,11 +17,9 @@ namespace {
 bool ClearBehind(const std::vector<ScanPoint>& raw, const ScanPoint& edge, int side,
                  double min_step_m) {
   for (int k = 1; k <= 2; ++k) {
-    const int beam = edge.beam + side * k;
-    const auto it = std::lower_bound(raw.begin(), raw.end(), beam,
-                                     [](const ScanPoint& q, int b) { return q.beam < b; });
-    if (it == raw.end() || it->beam != beam) continue;  // no return on that beam
-    return it->range >= edge.range + min_step_m;
+    const ScanPoint* out = FindBeam(raw, edge.beam + side * k);
+    if (out == nullptr) continue;  // no return on that beam
+    return out->range >= edge.range + min_step_m;
   }
   return false;
 }
