@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -33,10 +34,15 @@ struct ShelfScan {
   int count = 0;                             // legs seen (3 or 4 are used)
 };
 
-ShelfScan ScanShelf(const geometry::ShelfModel& model, const geometry::Pose2& truth,
-                    std::uint64_t seed) {
-  sim::LidarConfig lidar;  // the WLR-716 defaults but for the noise
+// The WLR-716 defaults but for the noise.
+sim::LidarConfig NoisyWlr() {
+  sim::LidarConfig lidar;
   lidar.range_noise_sigma_m = kRangeNoise;
+  return lidar;
+}
+
+ShelfScan ScanShelf(const geometry::ShelfModel& model, const geometry::Pose2& truth,
+                    std::uint64_t seed, const sim::LidarConfig& lidar = NoisyWlr()) {
   sim::World world;
   testing::AddRoom(world);
   world.AddShelf(1, model, truth);
@@ -86,32 +92,63 @@ std::optional<std::pair<ShelfFitResult, ShelfRefineResult>> FitLegCentres(
   return std::pair{*fit, RefineShelfPose(s.centres, s.count, model, *fit, sigma)};
 }
 
-std::vector<LegReturns> Returns(const ShelfScan& s, const ShelfFitResult& fit) {
+std::vector<LegReturns> Returns(const ShelfScan& s, const ShelfFitResult& fit,
+                                double range_noise_m = kRangeNoise) {
   std::vector<LegReturns> out;
   for (int i = 0; i < s.count; ++i) {
     LegReturns r;
     r.corner = fit.corner_of_leg[i];
     r.points = &s.legs[i];
     r.silhouette = MakeSilhouetteTerm(s.legs[i], s.edges[i], LegFitConfig{});
-    r.range_sigma_m = kRangeNoise;
+    r.range_sigma_m = range_noise_m;
     out.push_back(r);
   }
   return out;
 }
 
+// Pose errors of the fits on the returns and on the leg centres over a sweep of scans.
+struct SweepErrors {
+  double centre2_returns = 0.0, centre2_legs = 0.0, yaw2_returns = 0.0, yaw2_legs = 0.0;
+  int fitted = 0;
+
+  // Adds one scan's two poses; the returns' centre and heading errors.
+  std::pair<double, double> Add(const geometry::Pose2& on_returns, const geometry::Pose2& on_legs,
+                                const geometry::Pose2& truth, const geometry::ShelfModel& model) {
+    const double e = geometry::Distance(on_returns, truth);
+    const double y = testing::SymmetricYawError(on_returns.yaw, truth.yaw, model);
+    const double e_legs = geometry::Distance(on_legs, truth);
+    const double y_legs = testing::SymmetricYawError(on_legs.yaw, truth.yaw, model);
+    centre2_returns += e * e;
+    yaw2_returns += y * y;
+    centre2_legs += e_legs * e_legs;
+    yaw2_legs += y_legs * y_legs;
+    ++fitted;
+    return {e, std::abs(y)};
+  }
+
+  // Prints the RMS errors and expects the fit on the returns the better on both.
+  void ExpectReturnsBetter() const {
+    const double n = static_cast<double>(fitted);
+    std::printf("%d scans: RMS centre %.1f / %.1f mm, heading %.1f / %.1f mrad (returns / legs)\n",
+                fitted, 1e3 * std::sqrt(centre2_returns / n), 1e3 * std::sqrt(centre2_legs / n),
+                1e3 * std::sqrt(yaw2_returns / n), 1e3 * std::sqrt(yaw2_legs / n));
+    EXPECT_LT(centre2_returns, centre2_legs);
+    EXPECT_LT(yaw2_returns, yaw2_legs);
+  }
+};
+
 // A 1075 x 883 shelf 3.0-3.4 m out (its far legs 3.8-4.4 m, one to three returns each), turned
 // every way, 20 mm range noise (the noisier sensor), 200 seeds. Fitted each alone, a far
 // leg of one or two returns may sit anywhere along the face they hit, and its range follows; on
 // the returns at once the other legs hold it. Measured over the 200 scans: RMS centre error
-// 6.3 mm on the returns against 6.9 mm on the leg centres, heading 5.2 against 5.9 mrad (at 10 mm
+// 6.3 mm on the returns against 6.8 mm on the leg centres, heading 5.2 against 5.9 mrad (at 10 mm
 // noise the two differ by less than 10 %, the returns' fit the worse: 4.8 against 4.6 mm over 40
 // such scans; eval-layouts shows the same, 20 mm scenes gain and 10 mm ones barely move). Asserted:
 // every pose on the returns within 30 mm / 30 mrad of the truth, and both RMS errors below the
 // two-stage fit's.
 TEST(ShelfReturnFitTest, FarLegsSeenByFewReturnsAreHeldWhereTheOtherLegsPutThem) {
   const auto model = testing::PaperModels()[1];
-  double centre2_returns = 0.0, centre2_legs = 0.0, yaw2_returns = 0.0, yaw2_legs = 0.0;
-  int fitted = 0;
+  SweepErrors errors;
   for (std::uint64_t seed = 1; seed <= 200; ++seed) {
     const double standoff = 3.0 + 0.1 * static_cast<double>(seed % 5);
     const double bearing = -0.6 + 0.03 * static_cast<double>(seed % 40);
@@ -123,28 +160,56 @@ TEST(ShelfReturnFitTest, FarLegsSeenByFewReturnsAreHeldWhereTheOtherLegsPutThem)
     ASSERT_TRUE(legs_fit.has_value()) << seed;
     const ShelfReturnFitResult on_returns = FitShelfToReturns(
         Returns(s, legs_fit->first), model, legs_fit->second.T_lidar_shelf, LegFitConfig{});
-    const double e_returns = geometry::Distance(on_returns.T_lidar_shelf, truth);
-    const double y_returns = testing::SymmetricYawError(on_returns.T_lidar_shelf.yaw, yaw, model);
-    EXPECT_LT(e_returns, 0.03) << seed;
-    EXPECT_LT(std::abs(y_returns), 0.03) << seed;
+    const auto [e, y] =
+        errors.Add(on_returns.T_lidar_shelf, legs_fit->second.T_lidar_shelf, truth, model);
+    EXPECT_LT(e, 0.03) << seed;
+    EXPECT_LT(y, 0.03) << seed;
     EXPECT_GE(on_returns.T_lidar_shelf.yaw, -M_PI);
     EXPECT_LT(on_returns.T_lidar_shelf.yaw, M_PI);
-    centre2_returns += e_returns * e_returns;
-    yaw2_returns += y_returns * y_returns;
-    const double e_legs = geometry::Distance(legs_fit->second.T_lidar_shelf, truth);
-    const double y_legs =
-        testing::SymmetricYawError(legs_fit->second.T_lidar_shelf.yaw, yaw, model);
-    centre2_legs += e_legs * e_legs;
-    yaw2_legs += y_legs * y_legs;
-    ++fitted;
   }
-  ASSERT_GE(fitted, 150);
-  std::printf("%d scans: RMS centre %.1f / %.1f mm, heading %.1f / %.1f mrad (returns / legs)\n",
-              fitted, 1e3 * std::sqrt(centre2_returns / fitted),
-              1e3 * std::sqrt(centre2_legs / fitted), 1e3 * std::sqrt(yaw2_returns / fitted),
-              1e3 * std::sqrt(yaw2_legs / fitted));
-  EXPECT_LT(centre2_returns, centre2_legs);
-  EXPECT_LT(yaw2_returns, yaw2_legs);
+  ASSERT_GE(errors.fitted, 150);
+  errors.ExpectReturnsBetter();
+}
+
+// A 1080 x 856 shelf 1.9-2.3 m out and face-on (heading within 20 mrad of the beams), seen by
+// a blooming scanner (9 mrad spot, an echo from 1 % of it: config/lidar_variants/bloom.yaml) at
+// 10 mm range noise, 100 seeds: every leg returns a beam or two past its edges at its face's
+// range, beams nearly parallel to the leg's side faces that miss the section by a centimetre.
+// Measured across the beam (BoxRayResidual) such a return costs its centimetre; measured along
+// it, as the slab test's gap did, it counted up to a metre off and turned the shelf (independent
+// generator, against_wall seed 1 scene 84: 5 cm and 66 mrad off). Measured over the 100 scans,
+// on the returns / on the leg centres: RMS centre 5.6 / 7.6 mm, heading 4.6 / 5.1 mrad, worst
+// 14.4 mm and 13.9 mrad; with the slab gap 10.3 / 8.0 mm, 8.0 / 4.5 mrad, worst 43.8 mm and
+// 37.8 mrad. Asserted: every pose within 20 mm / 20 mrad of the truth, and the returns' RMS
+// errors below the two-stage fit's.
+TEST(ShelfReturnFitTest, ReturnsBloomedPastAFaceOnLegsEdgesDoNotTurnTheShelf) {
+  const auto model = testing::PaperModels()[3];
+  ASSERT_EQ(model.name, "t1-rect-1080x856");
+  sim::LidarConfig bloom;
+  bloom.range_noise_sigma_m = 0.01;
+  bloom.beam_divergence_rad = 0.009;
+  bloom.footprint_rays = 15;
+  bloom.min_echo_fraction = 0.01;
+  SweepErrors errors;
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    const double standoff = 1.9 + 0.1 * static_cast<double>(seed % 5);
+    const double bearing = -0.2 + 0.02 * static_cast<double>(seed % 21);
+    const double yaw = -0.02 + 0.004 * static_cast<double>(seed % 11);
+    const geometry::Pose2 truth = testing::PlaceShelf(model, standoff, bearing, yaw);
+    const ShelfScan s = ScanShelf(model, truth, seed, bloom);
+    if (s.count < 3) continue;
+    const auto legs_fit = FitLegCentres(s, model);
+    ASSERT_TRUE(legs_fit.has_value()) << seed;
+    const ShelfReturnFitResult on_returns =
+        FitShelfToReturns(Returns(s, legs_fit->first, bloom.range_noise_sigma_m), model,
+                          legs_fit->second.T_lidar_shelf, LegFitConfig{});
+    const auto [e, y] =
+        errors.Add(on_returns.T_lidar_shelf, legs_fit->second.T_lidar_shelf, truth, model);
+    EXPECT_LT(e, 0.02) << seed;
+    EXPECT_LT(y, 0.02) << seed;
+  }
+  ASSERT_GE(errors.fitted, 90);
+  errors.ExpectReturnsBetter();
 }
 
 // A leg given no model corner (corner -1, the default) cannot be placed: the fit returns the
