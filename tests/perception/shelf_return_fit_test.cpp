@@ -171,8 +171,9 @@ TEST(ShelfReturnFitTest, FarLegsSeenByFewReturnsAreHeldWhereTheOtherLegsPutThem)
   errors.ExpectReturnsBetter();
 }
 
-// A 1080 x 856 shelf 1.9-2.3 m out and face-on (heading within 20 mrad of the beams), seen by
-// a blooming scanner (9 mrad spot, an echo from 1 % of it: config/lidar_variants/bloom.yaml) at
+// A 1080 x 856 shelf 1.9-2.3 m out and face-on (its heading within 20 mrad of the sensor's axis,
+// at bearings within 0.2 rad, so the beams run nearly along its legs' sides), seen by a blooming
+// scanner (9 mrad spot, an echo from 1 % of it: config/lidar_variants/bloom.yaml) at
 // 10 mm range noise, 100 seeds: every leg returns a beam or two past its edges at its face's
 // range, beams nearly parallel to the leg's side faces that miss the section by a centimetre.
 // Measured across the beam (BoxRayResidual) such a return costs its centimetre; measured along
