@@ -287,7 +287,7 @@ TEST(LegFitTest, ASingleReturnBesideASeenEdgeIsPlacedByThatEdge) {
 // The sensor beside or under a large shelf: the field of view ends in the middle of the nearest
 // leg, which still shows 6 or more returns. The side where the scan ends is cut (the leg may go
 // on for centimetres there), so the edge seen on the other side and the leg's section place it:
-// within 0.5 steps RMS across the beam (measured 0.29-0.30); between the outer beams it is off
+// within 0.5 steps RMS across the beam (measured 0.29-0.31); between the outer beams it is off
 // by two steps or more (2.1-3.8). 0.35-0.4 m away.
 TEST(LegFitTest, ALegCutByTheEndOfTheFieldOfViewIsPlacedByItsOtherEdge) {
   for (const auto& leg : {Round26(), Square40()}) {
@@ -315,7 +315,8 @@ TEST(LegFitTest, ALegCutByTheEndOfTheFieldOfViewIsPlacedByItsOtherEdge) {
 // mm and below a third of the error with the blends taken at face value
 // (LegFitConfig::mixed_edge_share 0), which pulls a round leg 25-80 mm behind its face and draws
 // a square one 2-15 cm toward the sensor (grown until the blends' beams hit it). Measured: round
-// 6.4 / 3.8 mm, square -1.7 / -0.7 mm with the wall 0.1 / 0.25 m behind.
+// 6.4 / 3.8 mm, square 0.3 / -0.5 mm with the wall 0.1 / 0.25 m behind (square -1.7 / -0.7 mm
+// before the twenty-second session measured a beam missing a box across the beam).
 struct BlendedEdgeBias {
   double with_mm = 0.0;     // mean error along the beam, blends weighed (default share)
   double without_mm = 0.0;  // the same, blends taken at face value
