@@ -87,6 +87,7 @@ nlohmann::json HypothesisToJson(const perception::HypothesisRecord& h) {
           {"y", h.T_lidar_shelf.y},
           {"yaw", h.T_lidar_shelf.yaw},
           {"legs", legs},
+          {"legs_blended", h.legs_blended},
           {"err_sum", h.err_sum},
           {"confidence", h.confidence},
           {"legs_visible", h.legs_visible},

@@ -111,8 +111,12 @@ struct HypothesisRecord {
   std::string model;
   geometry::Pose2 T_lidar_shelf;      ///< the 3.4 fit (heading not yet resolved)
   std::vector<Eigen::Vector2d> legs;  ///< fitted leg centres [m]
-  double err_sum = 0.0;               ///< [m] Eq. 2 on the fitted legs (0 when the fit failed)
-  double confidence = 0.0;            ///< 0 when rejected before the evidence was weighed
+  /// Per leg of `legs`: true where the scan showed the leg only blended with what stands close
+  /// behind it, so it stands on its returns' bearing at the range the completed shelf puts it
+  /// (CompleteLegSets; its range was not measured), false where its own returns placed it.
+  std::vector<bool> legs_blended;
+  double err_sum = 0.0;     ///< [m] Eq. 2 on the fitted legs (0 when the fit failed)
+  double confidence = 0.0;  ///< 0 when rejected before the evidence was weighed
   int legs_visible = 0;
   int legs_occluded = 0;
   int legs_seen_through = 0;

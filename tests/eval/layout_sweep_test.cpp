@@ -564,7 +564,8 @@ TEST(LayoutSweepTest, CloseModelsAreChosenOnTheLegsReturns) {
 // legs at that range, so no leg set fits a model. Both far corners blended on their bearings
 // complete the shelf from its near legs (CompleteLegSets); each of those blends alone would not,
 // as a leg candidate behind one corner may be a neighbour's leg. Returned with all four legs
-// within 2 cm / 15 mrad of the truth.
+// within 2 cm / 15 mrad of the truth; its explained hypothesis says which two legs were seen
+// only blended (HypothesisRecord::legs_blended): the far ones.
 TEST(LayoutSceneTest, TwoFarLegsEachSeenOnlyBlendedCompleteTheShelf) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutScene scene = sim::GenerateLayoutScene(sim::LayoutClass::kMixedNeighbours, 5570,
@@ -577,9 +578,30 @@ TEST(LayoutSceneTest, TwoFarLegsEachSeenOnlyBlendedCompleteTheShelf) {
   const auto preset = scene.PresetInLidar();
   ASSERT_TRUE(preset.has_value());
   const perception::DetectionResult r =
-      perception::Detector(models).Detect(sim::SimulateLayoutScan(scene), *preset);
+      perception::Detector(models).Detect(sim::SimulateLayoutScan(scene), *preset, true);
   EXPECT_EQ(r.stats.leg_sets, 0);
   EXPECT_GT(r.stats.completed_sets, 0);
+  int returned = 0;
+  for (const perception::HypothesisRecord& h : r.hypotheses) {
+    ASSERT_EQ(h.legs_blended.size(), h.legs.size());
+    if (h.verdict != perception::Verdict::kReturned) continue;
+    ++returned;
+    ASSERT_EQ(h.legs.size(), 4u);
+    // The two blended legs are the two farthest from the sensor (4.1 m against 2.8-2.9 m).
+    double nearest_blended = 1e9, farthest_measured = 0.0;
+    int blended = 0;
+    for (std::size_t i = 0; i < h.legs.size(); ++i) {
+      if (h.legs_blended[i]) {
+        ++blended;
+        nearest_blended = std::min(nearest_blended, h.legs[i].norm());
+      } else {
+        farthest_measured = std::max(farthest_measured, h.legs[i].norm());
+      }
+    }
+    EXPECT_EQ(blended, 2);
+    EXPECT_GT(nearest_blended, farthest_measured + 0.5);
+  }
+  EXPECT_EQ(returned, 1);
   ASSERT_EQ(r.detections.size(), 1u);
   const perception::Detection& d = r.detections[0];
   EXPECT_EQ(d.model, target->model.name);

@@ -119,6 +119,21 @@ TEST(DetectionJson, StatsCarryTheRangeNoise) {
   EXPECT_EQ(none["stats"]["range_noise_m"].get<double>(), 0.0);
 }
 
+// `detect --explain`'s hypothesis: its fitted legs and, leg by leg, whether the scan showed that
+// leg only blended with what stands behind it (placed at the completed corner's range).
+TEST(DetectionJson, AHypothesisSaysWhichLegsWereSeenOnlyBlended) {
+  perception::HypothesisRecord h;
+  h.model = "t1-rect-1250x1250";
+  h.legs = {Eigen::Vector2d(2.8, 0.6), Eigen::Vector2d(2.9, -0.6), Eigen::Vector2d(4.1, -0.7),
+            Eigen::Vector2d(4.1, 0.5)};
+  h.legs_blended = {false, false, true, true};
+  const nlohmann::json j = HypothesisToJson(h);
+  ASSERT_TRUE(j.contains("legs_blended")) << j.dump();
+  ASSERT_EQ(j["legs_blended"].size(), j["legs"].size());
+  EXPECT_EQ(j["legs_blended"], nlohmann::json::parse("[false, false, true, true]"));
+  EXPECT_EQ(j["legs"][2][0].get<double>(), 4.1);
+}
+
 // stats.rejected has one count per rejection verdict, under the verdict's own name (the name
 // `detect --explain` gives each hypothesis), so a user can match the two.
 TEST(DetectionJson, EachRejectionCountStandsUnderItsVerdictsName) {
