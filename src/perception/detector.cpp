@@ -289,11 +289,9 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
                                       .Get(set.legs[i], model, hint, in.pre.candidates,
                                            config.leg_fit, in.range_noise_m)
                                       .centre;
+    rec.legs_blended.push_back(c.assumed_range_m.has_value());
   }
   rec.legs.assign(legs.begin(), legs.begin() + set.count);
-  for (int i = 0; i < set.count; ++i) {
-    rec.legs_blended.push_back(in.pre.candidates[set.legs[i]].assumed_range_m.has_value());
-  }
   const auto fit = FitShelf(legs, set.count, model, config.shelf_fit);
   if (!fit || !fit->converged || fit->rms_m > config.shelf_fit.max_rms_m) {
     rec.verdict = Verdict::kFit;
