@@ -504,20 +504,41 @@ TEST(LayoutSweepTest, ABloomingScannersLegsAreNotTakenForPosts) {
   EXPECT_LE(n.right_without, 0.70 * n.findable);
 }
 
-// A shelf against a wall, behind a box or beside a person often shows only two thin objects
-// clear of their background (its front legs): the bloom is read from two
-// (evidence.width_bloom_min_objects 2). Measured 444 / 476 right first, 423 with three required
-// (at 3a6d954; 442 and 421 before the twenty-second session's ray residual).
-TEST(LayoutSweepTest, TheBloomIsReadFromTwoThinObjects) {
+// A shelf against a wall, behind a box or beside a person often shows only one or two thin
+// objects clear of their background (its front legs): the bloom is read from one
+// (evidence.width_bloom_min_objects 1). Measured 446 / 476 right first, 444 with two required,
+// 423 with three (the twenty-third session). Asserted: one gains over two, at least 90 % right
+// first, and (BloomSweep) no phantom added. Against the independent scene generator, which draws
+// fewer clear thin objects, the gain is larger (seeds 1 / 1001 96.69 / 96.10 -> 96.88 / 96.43 %).
+TEST(LayoutSweepTest, TheBloomIsReadFromOneThinObject) {
   perception::DetectorConfig off;
-  off.evidence.width_bloom_min_objects = 3;
+  off.evidence.width_bloom_min_objects = 2;
   const BloomSweepCounts n =
       BloomSweep({sim::LayoutClass::kAgainstWall, sim::LayoutClass::kOccludedLeg,
                   sim::LayoutClass::kPersonBesideLeg},
                  200, off, "against_wall, occluded_leg, person_beside_leg");
   ASSERT_GT(n.findable, 400);
   EXPECT_GE(n.right_with, 0.9 * n.findable);
-  EXPECT_GE(n.right_with, n.right_without + 10);
+  EXPECT_GT(n.right_with, n.right_without);
+}
+
+// eval-layouts' against_wall scene 12 on the blooming receiver (config/lidar_variants/bloom.yaml,
+// 10 mm noise): a 1250 x 1250 shelf 3 m out before a wall, all four legs in sight but only one
+// thin object in the scan clear of what lies behind it. Its legs look 25 mm too wide on average;
+// the bloom read from that one object excuses it: returned first, within 5 cm. Requiring two
+// objects reads no bloom (stats.width_bloom_rad 0) and misses the shelf.
+TEST(LayoutSceneTest, TheBloomReadFromOneThinObjectFindsAShelfBeforeAWall) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAgainstWall, 12);
+  perception::DetectorConfig off;
+  off.evidence.width_bloom_min_objects = 2;
+  ExpectFoundOnlyWith(models, config, off, BloomLayout());
+  const auto with = RunSweep(models, config, {}, BloomLayout());
+  ASSERT_EQ(with.size(), 1u);
+  EXPECT_GT(with[0].stats.width_bloom_rad, 0.0);
+  const auto without = RunSweep(models, config, off, BloomLayout());
+  ASSERT_EQ(without.size(), 1u);
+  EXPECT_EQ(without[0].stats.width_bloom_rad, 0.0);
 }
 
 // Rows of round-legged shelves show many thin objects, and the smallest excess of many sits low

@@ -57,7 +57,7 @@ BloomScene Scene(const std::vector<double>& widths_m, const std::vector<double>&
 
 WidthBloomEstimate Estimate(const BloomScene& s, std::optional<int> min_objects = std::nullopt,
                             std::optional<double> order_share = std::nullopt) {
-  EvidenceConfig config;  // the defaults: 0.1 m at most, clear by 0.1 m, the 10 % quantile, 2
+  EvidenceConfig config;  // the defaults: 0.1 m at most, clear by 0.1 m, the 10 % quantile, 1
   if (min_objects) config.width_bloom_min_objects = *min_objects;
   if (order_share) config.width_bloom_order_share = *order_share;
   config.width_bloom_max_rad = kMaxBloom;
@@ -103,15 +103,20 @@ TEST(WidthBloomTest, AThinObjectDrawnTrueOrTooFewObjectsGrantNothing) {
   EXPECT_GT(Estimate(Scene(widths, kRanges, 0.0)).bloom_rad, 0.5 * kAlpha);
   widths[0] = 0.02;
   EXPECT_LE(Estimate(Scene(widths, kRanges, 0.0)).bloom_rad, 0.5 * kAlpha);
-  // One thin object clear of its background is too few to tell a sensor by (a stray pair of
-  // returns, a bracket); two are enough by default, and a stricter setting refuses them.
+  // One thin object clear of its background is enough by default (a shelf against a wall may show
+  // only one front leg clear of what lies behind it); a stricter setting refuses it, and a scan
+  // with none grants nothing.
   const BloomScene one = Scene({0.026}, {2.0}, 0.012);
   EXPECT_EQ(Estimate(one).objects, 1);
-  EXPECT_EQ(Estimate(one).bloom_rad, 0.0);
+  EXPECT_GT(Estimate(one).bloom_rad, 0.0);
+  EXPECT_EQ(Estimate(one, 2).bloom_rad, 0.0);
   const BloomScene two = Scene({0.026, 0.026}, {2.0, 3.0}, 0.012);
   EXPECT_EQ(Estimate(two).objects, 2);
   EXPECT_GT(Estimate(two).bloom_rad, 0.0);
   EXPECT_EQ(Estimate(two, 3).bloom_rad, 0.0);
+  const BloomScene none = Scene({}, {}, 0.012);
+  EXPECT_EQ(Estimate(none).objects, 0);
+  EXPECT_EQ(Estimate(none).bloom_rad, 0.0);
 }
 
 TEST(WidthBloomTest, TheSmallestExcessIsRaisedByItsExpectedQuantisationShortfall) {
