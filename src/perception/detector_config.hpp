@@ -202,10 +202,10 @@ struct EvidenceConfig {
   // width checks. Three -> two in the twenty-first session (independent scene generator, seeds 1 /
   // 1001: 90.4 / 90.2 -> 94.9 / 95.0 % right first), two -> one in the twenty-third (seeds 1 /
   // 1001 / 2001 / 3001 / 4001: 96.69 / 96.10 / 96.93 / 95.56 / 96.03 -> 96.88 / 96.43 / 97.00 /
-  // 96.40 / 96.42 %, no phantom added); the default sensors' eval-layouts samples, phantom counts
-  // and clutter detections unchanged both times. The estimate from one is that object's excess,
-  // an overestimate when it is a 40 mm leg seen corner-on (its diagonal against the thinnest
-  // leg); granted only where the preset vouches for a shelf.
+  // 96.40 / 96.42 %, no phantom added); the default sensors' eval-layouts samples within a scene,
+  // phantom counts and clutter detections unchanged both times. The estimate from one is that
+  // object's excess, an overestimate when it is a 40 mm leg seen corner-on (its diagonal against
+  // the thinnest leg); granted only where the preset vouches for a shelf.
   int width_bloom_min_objects = 1;        ///< [-] fewer thin objects clear of their background:
                                           ///< no bloom granted
   double width_bloom_max_extent_m = 0.1;  ///< [m] a cluster this long at most is a thin object

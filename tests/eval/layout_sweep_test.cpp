@@ -530,14 +530,17 @@ TEST(LayoutSweepTest, TheBloomIsReadFromOneThinObject) {
 TEST(LayoutSceneTest, TheBloomReadFromOneThinObjectFindsAShelfBeforeAWall) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAgainstWall, 12);
-  perception::DetectorConfig off;
-  off.evidence.width_bloom_min_objects = 2;
-  ExpectFoundOnlyWith(models, config, off, BloomLayout());
   const auto with = RunSweep(models, config, {}, BloomLayout());
   ASSERT_EQ(with.size(), 1u);
+  EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
+  EXPECT_EQ(with[0].phantoms, 0);
+  EXPECT_LT(with[0].centre_error_m, config.phantom_radius_m);
   EXPECT_GT(with[0].stats.width_bloom_rad, 0.0);
+  perception::DetectorConfig off;
+  off.evidence.width_bloom_min_objects = 2;
   const auto without = RunSweep(models, config, off, BloomLayout());
   ASSERT_EQ(without.size(), 1u);
+  EXPECT_EQ(without[0].outcome, SceneOutcome::kMissed);
   EXPECT_EQ(without[0].stats.width_bloom_rad, 0.0);
 }
 
