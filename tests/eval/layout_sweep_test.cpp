@@ -180,23 +180,31 @@ void ExpectMissed(const std::vector<LayoutSceneResult>& r) {
 }
 
 // One scene (drawn on `layout`) whose target a detector with `on` returns first, within 5 cm and
-// with no phantom, and which a detector with `off` misses.
-void ExpectFoundOnlyWith(const std::vector<geometry::ShelfModel>& models,
-                         const LayoutSweepConfig& config, const perception::DetectorConfig& off,
-                         const sim::LayoutConfig& layout, const perception::DetectorConfig& on) {
+// with no phantom, and which a detector with `off` misses. The two results, for further checks;
+// none when a sweep did not give one scene (a failure already).
+std::optional<PairedScene> ExpectFoundOnlyWith(const std::vector<geometry::ShelfModel>& models,
+                                               const LayoutSweepConfig& config,
+                                               const perception::DetectorConfig& off,
+                                               const sim::LayoutConfig& layout,
+                                               const perception::DetectorConfig& on) {
   const auto with = RunSweep(models, config, on, layout);
-  ASSERT_EQ(with.size(), 1u);
+  const auto without = RunSweep(models, config, off, layout);
+  EXPECT_EQ(with.size(), 1u);
+  EXPECT_EQ(without.size(), 1u);
+  if (with.size() != 1u || without.size() != 1u) return std::nullopt;
   EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
   EXPECT_EQ(with[0].phantoms, 0);
   EXPECT_LT(with[0].centre_error_m, config.phantom_radius_m);
-  ExpectMissed(RunSweep(models, config, off, layout));
+  EXPECT_EQ(without[0].outcome, SceneOutcome::kMissed);
+  return PairedScene{without[0], with[0]};
 }
 
 // The same with the default detector as `on`: the rule `off` turns off finds the scene's target.
-void ExpectFoundOnlyWith(const std::vector<geometry::ShelfModel>& models,
-                         const LayoutSweepConfig& config, const perception::DetectorConfig& off,
-                         const sim::LayoutConfig& layout) {
-  ExpectFoundOnlyWith(models, config, off, layout, {});
+std::optional<PairedScene> ExpectFoundOnlyWith(const std::vector<geometry::ShelfModel>& models,
+                                               const LayoutSweepConfig& config,
+                                               const perception::DetectorConfig& off,
+                                               const sim::LayoutConfig& layout) {
+  return ExpectFoundOnlyWith(models, config, off, layout, {});
 }
 
 TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
@@ -529,19 +537,13 @@ TEST(LayoutSweepTest, TheBloomIsReadFromOneThinObject) {
 // objects reads no bloom (stats.width_bloom_rad 0) and misses the shelf.
 TEST(LayoutSceneTest, TheBloomReadFromOneThinObjectFindsAShelfBeforeAWall) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const LayoutSweepConfig config = OneScene(sim::LayoutClass::kAgainstWall, 12);
-  const auto with = RunSweep(models, config, {}, BloomLayout());
-  ASSERT_EQ(with.size(), 1u);
-  EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
-  EXPECT_EQ(with[0].phantoms, 0);
-  EXPECT_LT(with[0].centre_error_m, config.phantom_radius_m);
-  EXPECT_GT(with[0].stats.width_bloom_rad, 0.0);
   perception::DetectorConfig off;
   off.evidence.width_bloom_min_objects = 2;
-  const auto without = RunSweep(models, config, off, BloomLayout());
-  ASSERT_EQ(without.size(), 1u);
-  EXPECT_EQ(without[0].outcome, SceneOutcome::kMissed);
-  EXPECT_EQ(without[0].stats.width_bloom_rad, 0.0);
+  const auto r =
+      ExpectFoundOnlyWith(models, OneScene(sim::LayoutClass::kAgainstWall, 12), off, BloomLayout());
+  ASSERT_TRUE(r.has_value());
+  EXPECT_GT(r->with.stats.width_bloom_rad, 0.0);
+  EXPECT_EQ(r->without.stats.width_bloom_rad, 0.0);
 }
 
 // Rows of round-legged shelves show many thin objects, and the smallest excess of many sits low
