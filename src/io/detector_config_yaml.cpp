@@ -117,8 +117,8 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("width_bloom_order_share", c.width_bloom_order_share);
   f.Read("width_bloom_min_objects", c.width_bloom_min_objects);
   f.Read("width_bloom_max_extent_m", c.width_bloom_max_extent_m);
-  f.Read("width_bloom_own_legs", c.width_bloom_own_legs);
   f.Read("width_bloom_min_step_m", c.width_bloom_min_step_m);
+  f.Read("width_bloom_own_legs", c.width_bloom_own_legs);
   f.Read("blend_max_returns", c.blend_max_returns);
   f.Read("blend_max_step_m", c.blend_max_step_m);
   f.Read("blend_narrow_bias_m", c.blend_narrow_bias_m);

@@ -206,13 +206,13 @@ struct EvidenceConfig {
   // phantom counts and clutter detections unchanged both times. The estimate from one is that
   // object's excess, an overestimate when it is a 40 mm leg seen corner-on (its diagonal against
   // the thinnest leg); granted only where the preset vouches for a shelf.
-  int width_bloom_min_objects = 1;  ///< [-] fewer thin objects clear of their background:
-                                    ///< no bloom granted
+  int width_bloom_min_objects = 1;        ///< [-] fewer thin objects clear of their background:
+                                          ///< no bloom granted
+  double width_bloom_max_extent_m = 0.1;  ///< [m] a cluster this long at most is a thin object
+  double width_bloom_min_step_m = 0.1;    ///< [m] ... clear of its background by this much
   /// Where the preset vouches for a shelf, also its own legs' common bloom (OwnLegsBloom in
   /// shelf_evidence.cpp: their mean excess width with four seen, the least less a beam with three).
   bool width_bloom_own_legs = true;
-  double width_bloom_max_extent_m = 0.1;  ///< [m] a cluster this long at most is a thin object
-  double width_bloom_min_step_m = 0.1;    ///< [m] ... clear of its background by this much
   /// A leg of at most blend_max_returns returns whose beams either side returned from at most
   /// blend_max_step_m behind it may be a thinner leg blended with its background (MayBeBlend);
   /// a hypothesis on two or more such legs whose legs look narrower than its model's by more

@@ -1,10 +1,12 @@
 #include "perception/shelf_evidence.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "geometry/angle.hpp"
 #include "perception/leg_silhouette.hpp"
@@ -259,12 +261,31 @@ bool CloseBehind(const std::optional<double>& step, double max_step_m) {
   return step && *step > 0.0 && *step <= max_step_m;
 }
 
+// A seen leg's width against its model's: both in metres at the leg's range (widths compared as
+// angles: the outer beams' span plus one beam against the section's silhouette).
+struct LegWidth {
+  double range_m = 0.0;
+  double expected_m = 0.0;  ///< the model leg's silhouette
+  double seen_m = 0.0;      ///< SeenWidth of its returns
+  bool closed = false;      ///< the scan closes its outline on both sides
+};
+
+LegWidth MeasureLegWidth(const Cluster& c, const Eigen::Vector2d& centre,
+                         const geometry::LegModel& leg, double shelf_yaw, double alpha) {
+  LegWidth w;
+  w.range_m = centre.norm();
+  w.expected_m = w.range_m * LegSilhouetteAngle(leg, shelf_yaw, centre);
+  w.seen_m = SeenWidth(c.points.front(), c.points.back(), w.range_m, alpha);
+  w.closed = c.edges.before_rad && c.edges.after_rad;
+  return w;
+}
+
 // The bloom [rad] a shelf's own legs show in common (LessBloom takes it off their widths like the
 // scan's). A shelf's legs are of one paint and stand at about one range, so a scanner that draws
 // bright thin objects wider (EstimateWidthBloom) draws them wider alike, however much darker the
 // scan's other thin objects are; the scan's low quantile follows the darkest of those and left a
 // bright shelf's legs too wide (independent scene generator, seed 1: 11 of its 22 misses, legs
-// 20-30 mm too wide on average with stats.width_bloom_rad at 0.5-7 mrad). With four legs seen,
+// 13-30 mm too wide on average with stats.width_bloom_rad at 0.5-7 mrad). With four legs seen,
 // their mean excess over the model's silhouettes, taken from the legs whose outline the scan
 // closes (at least two): a single leg wider than the rest (a person's trouser leg merged in)
 // still fails the per-leg width check. With three, the least of them less a beam (a leg's width
@@ -272,25 +293,18 @@ bool CloseBehind(const std::optional<double>& step, double max_step_m) {
 // the 26 mm round leg, are what a mean would excuse (--class clutter --scenes-per-class 3000
 // --seed0 200000 with the WLR-716: a round-legged shelf on three posts). 0 with fewer than two
 // closed outlines.
-double OwnLegsBloom(const geometry::Pose2& T_lidar_shelf, const geometry::ShelfModel& model,
-                    const std::array<int, 4>& corner_candidate, const PreprocessOutput& pre,
-                    double alpha) {
-  const auto corners = model.LegCentres();
+double OwnLegsBloom(const std::array<std::optional<LegWidth>, 4>& widths, double alpha) {
   int seen_legs = 0;
   int closed_legs = 0;
   double sum = 0.0;
   double least = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 4; ++k) {
-    if (corner_candidate[k] < 0) continue;
+  for (const auto& w : widths) {
+    if (!w) continue;
     ++seen_legs;
-    const Cluster& c = pre.candidates[corner_candidate[k]];
-    if (!c.edges.before_rad || !c.edges.after_rad) continue;
-    const Eigen::Vector2d centre = T_lidar_shelf * corners[k];
-    const double range = centre.norm();
-    const double expected = range * LegSilhouetteAngle(model.leg, T_lidar_shelf.yaw, centre);
-    const double excess = SeenWidth(c.points.front(), c.points.back(), range, alpha) - expected;
-    sum += excess / range;
-    least = std::min(least, excess / range - alpha);
+    if (!w->closed) continue;
+    const double excess = (w->seen_m - w->expected_m) / w->range_m;
+    sum += excess;
+    least = std::min(least, excess - alpha);
     ++closed_legs;
   }
   if (closed_legs < 2) return 0.0;
@@ -322,13 +336,17 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   // width_bloom_max_rad) is granted only where the map vouches for a shelf: a robot searching
   // without one (and a scan of a room with no shelf in it) keeps the strict widths, which tell
   // furniture and people's legs from shelf legs.
+  const auto corners = model.LegCentres();
+  std::array<std::optional<LegWidth>, 4> widths;
+  for (int k = 0; k < 4; ++k) {
+    if (corner_candidate[k] < 0) continue;
+    widths[k] = MeasureLegWidth(pre.candidates[corner_candidate[k]], T_lidar_shelf * corners[k],
+                                model.leg, T_lidar_shelf.yaw, alpha);
+  }
   double bloom = vouched ? pre.width_bloom_rad : 0.0;
   if (vouched && config.width_bloom_own_legs) {
-    bloom =
-        std::max(bloom, std::min(OwnLegsBloom(T_lidar_shelf, model, corner_candidate, pre, alpha),
-                                 config.width_bloom_max_rad));
+    bloom = std::max(bloom, std::min(OwnLegsBloom(widths, alpha), config.width_bloom_max_rad));
   }
-  const auto corners = model.LegCentres();
   std::vector<int> own_spans, excused_spans;
   double width_bias_sum = 0.0;
   std::array<double, 4> width_errors{};
@@ -346,20 +364,18 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       ev.legs[k] = LegView::kSeen;
       if (!c.assumed_range_m) ++ev.legs_measured;
       if (MayBeBlend(c, config)) ++ev.legs_maybe_blended;
-      // Leg size: a post, a person's leg or a box corner is wider than the model's leg.
-      // Widths compared as angles (the outer beams' span plus one beam against the section's
-      // silhouette), in metres at the leg's range.
-      const Eigen::Vector2d centre = T_lidar_shelf * corners[k];
-      const double range = centre.norm();
-      const double expected = range * LegSilhouetteAngle(model.leg, T_lidar_shelf.yaw, centre);
+      // Leg size: a post, a person's leg or a box corner is wider than the model's leg
+      // (MeasureLegWidth).
+      const double range = widths[k]->range_m;
+      const double expected = widths[k]->expected_m;
+      const double seen = widths[k]->seen_m;
       // One beam either way at the edges, plus the blur of the beam's footprint.
       const double beam = range * alpha;  // one beam's spacing at the leg
       const double slack = beam + config.leg_width_slack_m;
-      const double seen = SeenWidth(c.points.front(), c.points.back(), range, alpha);
       // A leg whose outline the scan does not close on both sides (a dropout or something
       // nearer beside it) may be wider than its returns: its width is only a lower bound, too
       // narrow says nothing.
-      const bool closed = c.edges.before_rad && c.edges.after_rad;
+      const bool closed = widths[k]->closed;
       const double off = LessBloom(seen - expected, bloom * range);
       width_errors[k] = std::max(0.0, (closed ? std::abs(off) : off) - slack);
       ++width_count;
