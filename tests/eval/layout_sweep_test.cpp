@@ -195,7 +195,7 @@ std::optional<PairedScene> ExpectFoundOnlyWith(const std::vector<geometry::Shelf
   EXPECT_EQ(with[0].outcome, SceneOutcome::kRightFirst);
   EXPECT_EQ(with[0].phantoms, 0);
   EXPECT_LT(with[0].centre_error_m, config.phantom_radius_m);
-  EXPECT_EQ(without[0].outcome, SceneOutcome::kMissed);
+  ExpectMissed(without);
   return PairedScene{without[0], with[0]};
 }
 
