@@ -152,6 +152,7 @@ void ReadCompletion(YamlFields f, perception::LegCompletionConfig& c) {
   f.Read("blended_candidate_max_step_m", c.blended_candidate_max_step_m);
   f.Read("lone_return_tolerance_m", c.lone_return_tolerance_m);
   f.Read("lone_return_sigmas", c.lone_return_sigmas);
+  f.Read("flush_object_max_m", c.flush_object_max_m);
   f.RejectUnknown();
 }
 

@@ -155,6 +155,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           ">= 0");
   k.Check(c.completion.lone_return_sigmas >= 0.0, "completion.lone_return_sigmas",
           ">= 0 (both 0: off)");
+  k.Check(c.completion.flush_object_max_m >= 0.0, "completion.flush_object_max_m", ">= 0 (0: off)");
   return k.Result();
 }
 

@@ -299,6 +299,10 @@ struct LegCompletionConfig {
                                            ///< from (its nearest point to its centre) ...
   double lone_return_sigmas = 2.0;  ///< [-] ... or this many times the range noise, if more;
                                     ///< both 0: such a return never completes a corner
+  double flush_object_max_m = 0.2;  ///< [m] returns at a corner whose object goes on past one
+                                    ///< side only and ends within this are the leg flush with
+                                    ///< something beside it (a person's leg), when the other
+                                    ///< side's outline ends at the leg's silhouette; 0: off
 };
 
 /// All detector parameters, one struct per stage (config/detector.yaml).
