@@ -150,7 +150,7 @@ bool StandsAlone(const std::vector<ScanPoint>& points, Cluster& c, const Surroun
   // where the leg's silhouette would (FreeEdgeAtLegEdge; without that test a post 12 cm across at
   // a corner and a round-legged neighbour's leg made shelves). Independent scenes
   // (scripts/independent_scenes.py, seeds 1 / 1001 / 2001 / 3001 / 4001): 97.40 / 96.69 / 97.20 /
-  // 96.85 / 96.75 -> 97.79 / 97.01 / 97.33 / 97.43 / 97.33 %, the same phantom scenes; 100000
+  // 96.85 / 96.75 -> 97.79 / 97.01 / 97.33 / 97.49 / 97.33 %, the same phantom scenes; 100000
   // eval-layouts scenes 73381 -> 73414 right first, the same 24 phantom scenes; one clutter
   // detection more in 24000 clutter scenes and one phantom scene more on the blooming receiver at
   // seed0 5001. Offered as a candidate in every scan's preprocessing instead (not only where
