@@ -121,8 +121,6 @@ struct Surroundings {
   double bloom_rad = 0.0;         // how much wider the scan draws thin objects (EstimateWidthBloom)
 };
 
-double Bearing(const ScanPoint& q) { return std::atan2(q.p.y(), q.p.x()); }
-
 // True when the cut's outline on the side where the object does not go on (`free_is_front`: its
 // first return's side) ends where the leg predicted at `corner` would show its edge: the outer
 // return lies off the corner's bearing, outward, by the leg's half silhouette (between half its
@@ -133,9 +131,9 @@ bool FreeEdgeAtLegEdge(const Cluster& c, bool free_is_front, const Eigen::Vector
   if (c.points.size() < 2) return false;
   const ScanPoint& outer = free_is_front ? c.points.front() : c.points.back();
   const ScanPoint& inner = free_is_front ? c.points.back() : c.points.front();
-  const double spread = geometry::AngleDiff(Bearing(outer), Bearing(inner));
+  const double spread = geometry::AngleDiff(outer.angle, inner.angle);
   const double beam = std::abs(spread) / std::abs(outer.beam - inner.beam);
-  const double off = geometry::AngleDiff(Bearing(outer), std::atan2(corner.y(), corner.x())) *
+  const double off = geometry::AngleDiff(outer.angle, std::atan2(corner.y(), corner.x())) *
                      (spread > 0.0 ? 1.0 : -1.0);
   const double r = corner.norm();
   const double half_min = std::asin(std::min(1.0, 0.5 * std::min(leg.width_m, leg.length_m) / r));
