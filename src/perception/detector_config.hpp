@@ -297,12 +297,16 @@ struct LegCompletionConfig {
                                            ///< mixed point looks like) completes a corner when it
                                            ///< lies this near the ranges the leg returns
                                            ///< from (its nearest point to its centre) ...
-  double lone_return_sigmas = 2.0;  ///< [-] ... or this many times the range noise, if more;
-                                    ///< both 0: such a return never completes a corner
-  double flush_object_max_m = 0.2;  ///< [m] returns at a corner whose object goes on past one
-                                    ///< side only and ends within this are the leg flush with
-                                    ///< something beside it (a person's leg), when the other
-                                    ///< side's outline ends at the leg's silhouette; 0: off
+  double lone_return_sigmas = 2.0;    ///< [-] ... or this many times the range noise, if more;
+                                      ///< both 0: such a return never completes a corner
+  double flush_object_max_m = 0.2;    ///< [m] returns at a corner whose object goes on past one
+                                      ///< side only and ends within this are the leg flush with
+                                      ///< something beside it (a person's leg), when the other
+                                      ///< side's outline ends at the leg's silhouette; 0: off
+  bool flush_edge_background = true;  ///< ... and past that outline the scan sees the
+                                      ///< background: the first return out (two dropped beams
+                                      ///< skipped) lies farther, or none does; not a nearer
+                                      ///< occluder nor the same surface past a dropout
 };
 
 /// All detector parameters, one struct per stage (config/detector.yaml).
