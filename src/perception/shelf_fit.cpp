@@ -13,6 +13,42 @@
 namespace shelfdock::perception {
 namespace {
 
+// The unit direction of the beam to `leg` (x for a leg at the sensor).
+Eigen::Vector2d BeamDirection(const Eigen::Vector2d& leg) {
+  const double norm = leg.norm();
+  return norm > 1e-9 ? Eigen::Vector2d(leg / norm) : Eigen::Vector2d::UnitX();
+}
+
+// Rows: the error along and across the leg's beam, times `w_along` and `w_across` (one over
+// their std).
+Eigen::Matrix2d BeamWeights(const Eigen::Vector2d& leg, double w_along, double w_across) {
+  const Eigen::Vector2d along = BeamDirection(leg);
+  Eigen::Matrix2d a;
+  a << w_along * along.x(), w_along * along.y(), -w_across * along.y(), w_across * along.x();
+  return a;
+}
+
+// Rows: the error along and across the leg's beam, each over its std.
+Eigen::Matrix2d InfoSqrt(const Eigen::Vector2d& leg, const LegSigma& sigma) {
+  return BeamWeights(leg, 1.0 / sigma.along_m, 1.0 / sigma.across_m);
+}
+
+// `cost` (kResiduals residuals of kParams parameters) minimised from `x` by Ceres' TinySolver:
+// dense Levenberg-Marquardt with automatic differentiation and no heap allocation, at most
+// `max_iterations` iterations. False when it stopped on that cap rather than on a small gradient,
+// step, cost or cost change.
+template <int kResiduals, int kParams, typename Cost>
+bool SolveTiny(const Cost& cost, Eigen::Matrix<double, kParams, 1>& x, int max_iterations) {
+  using AutoDiff = ceres::TinySolverAutoDiffFunction<Cost, kResiduals, kParams>;
+  ceres::TinySolver<AutoDiff> solver;
+  solver.options.max_num_iterations = max_iterations;
+  const AutoDiff function(cost);
+  return solver.Solve(function, &x).status != ceres::TinySolver<AutoDiff>::HIT_MAX_ITERATIONS;
+}
+
+// TinySolver's own iteration cap, for the solves that set none.
+constexpr int kTinySolverIterations = 50;
+
 // Leg (lx, ly) against model corner k at the pose x = (x, y, yaw) (c, s: its cos and sin): the
 // error along and across the leg's beam over their std (A), into r[0], r[1].
 template <typename T>
@@ -104,31 +140,22 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
     // The std along the beam grows as sqrt(range) (beams on a leg fall as 1 / range), across it
     // as range (a bearing); scaled so that a leg at 1 m weighs 1 along its beam, which keeps
     // the Cauchy scale in metres.
-    const double norm = legs[i].norm();
-    const double range = std::max(norm, 0.1);
-    const Eigen::Vector2d along =
-        norm > 1e-9 ? Eigen::Vector2d(legs[i] / norm) : Eigen::Vector2d::UnitX();
-    const double w_along = 1.0 / std::sqrt(range);
-    const double w_across = config.leg_radial_sigma_m / (config.leg_bearing_sigma_rad * range);
-    cost.info_sqrt[i] << w_along * along.x(), w_along * along.y(), -w_across * along.y(),
-        w_across * along.x();
+    const double range = std::max(legs[i].norm(), 0.1);
+    cost.info_sqrt[i] =
+        BeamWeights(legs[i], 1.0 / std::sqrt(range),
+                    config.leg_radial_sigma_m / (config.leg_bearing_sigma_rad * range));
   }
-  // Ceres' TinySolver: dense LM on 3 parameters and 8 residuals, no heap allocation; the
-  // heading is wrapped to [-pi, pi) after the solve (the cost is 2 pi periodic).
-  using AutoDiff = ceres::TinySolverAutoDiffFunction<CornerCost, 8, 3>;
-  ceres::TinySolver<AutoDiff> solver;
-  solver.options.max_num_iterations = config.max_iterations;
+  // 3 parameters and 8 residuals; the heading is wrapped to [-pi, pi) after the solve (the cost
+  // is 2 pi periodic).
   Eigen::Vector3d x(T_init.x, T_init.y, T_init.yaw);
   constexpr int kIrlsRounds = 3;
   const double s2 = config.loss_scale_m * config.loss_scale_m;
   double robust_cost = 0.0;
   bool solver_converged = false;
   for (int round = 0; round < kIrlsRounds; ++round) {
-    const AutoDiff function(cost);
-    const auto& summary = solver.Solve(function, &x);
     // Converged: the last round stopped on a small gradient, step, cost or cost change, not on
     // the iteration cap (with only 3 parameters LM needs a handful of iterations).
-    solver_converged = summary.status != decltype(solver)::HIT_MAX_ITERATIONS;
+    solver_converged = SolveTiny<8, 3>(cost, x, config.max_iterations);
     // Cauchy: rho(e2) = s^2 log(1 + e2 / s^2), weight rho'(e2) = 1 / (1 + e2 / s^2).
     const geometry::Pose2 T(x(0), x(1), x(2));
     const Eigen::Matrix2d R = T.rotation();
@@ -171,24 +198,6 @@ std::optional<ShelfFitResult> FitShelf(const std::array<Eigen::Vector2d, 4>& leg
   out.covariance = variance * (J.transpose() * J).inverse();
   return out;
 }
-
-namespace {
-// The unit direction of the beam to `leg` (x for a leg at the sensor).
-Eigen::Vector2d BeamDirection(const Eigen::Vector2d& leg) {
-  const double norm = leg.norm();
-  return norm > 1e-9 ? Eigen::Vector2d(leg / norm) : Eigen::Vector2d::UnitX();
-}
-
-// Rows: the error along and across the leg's beam, each over its std.
-Eigen::Matrix2d InfoSqrt(const Eigen::Vector2d& leg, const LegSigma& sigma) {
-  const Eigen::Vector2d along = BeamDirection(leg);
-  const double w_along = 1.0 / sigma.along_m;
-  const double w_across = 1.0 / sigma.across_m;
-  Eigen::Matrix2d a;
-  a << w_along * along.x(), w_along * along.y(), -w_across * along.y(), w_across * along.x();
-  return a;
-}
-}  // namespace
 
 double LegsChiSquare(const std::array<Eigen::Vector2d, 4>& legs, int count,
                      const geometry::ShelfModel& model, const std::array<int, 4>& corner_of_leg,
@@ -248,18 +257,15 @@ RangeBiasFit FitWithRangeBias(const std::array<Eigen::Vector2d, 4>& legs, int co
     cost.info_sqrt[i] = InfoSqrt(legs[i], sigma[i]);
   }
   cost.inv_sigma_b = 1.0 / bias_sigma_m;
-  using AutoDiff = ceres::TinySolverAutoDiffFunction<BiasedCornerCost, 9, 4>;
-  ceres::TinySolver<AutoDiff> solver;
   Eigen::Vector4d x(T_lidar_shelf.x, T_lidar_shelf.y, T_lidar_shelf.yaw, 0.0);
-  const AutoDiff function(cost);
-  solver.Solve(function, &x);
+  SolveTiny<9, 4>(cost, x, kTinySolverIterations);
   RangeBiasFit out;
   if (!x.allFinite()) {  // the pose as given, no bias
     out.chi2 = LegsChiSquare(legs, count, model, corner_of_leg, T_lidar_shelf, sigma);
     return out;
   }
   Eigen::Matrix<double, 9, 1> r;
-  function(x.data(), r.data(), nullptr);
+  cost(x.data(), r.data());
   out.chi2 = r.squaredNorm();
   out.bias_m = x(3);
   out.T_lidar_shelf = geometry::Pose2(x(0), x(1), geometry::WrapAngle(x(2)));
@@ -277,11 +283,8 @@ ShelfRefineResult RefineShelfPose(const std::array<Eigen::Vector2d, 4>& legs, in
     cost.sqrt_w[i] = 1.0;
     cost.info_sqrt[i] = InfoSqrt(legs[i], sigma[i]);
   }
-  using AutoDiff = ceres::TinySolverAutoDiffFunction<CornerCost, 8, 3>;
-  ceres::TinySolver<AutoDiff> solver;
   Eigen::Vector3d x(fit.T_lidar_shelf.x, fit.T_lidar_shelf.y, fit.T_lidar_shelf.yaw);
-  const AutoDiff function(cost);
-  solver.Solve(function, &x);
+  SolveTiny<8, 3>(cost, x, kTinySolverIterations);
   ShelfRefineResult out;
   if (!x.allFinite()) {  // keep the fit's pose; its chi-square as it stands
     x = Eigen::Vector3d(fit.T_lidar_shelf.x, fit.T_lidar_shelf.y, fit.T_lidar_shelf.yaw);
