@@ -14,7 +14,6 @@
 #include "perception/leg_completion.hpp"
 #include "perception/leg_fit.hpp"
 #include "perception/leg_search.hpp"
-#include "perception/mixed_returns.hpp"
 #include "perception/model_match.hpp"
 #include "perception/preset_gate.hpp"
 #include "perception/shelf_evidence.hpp"
@@ -33,7 +32,8 @@ struct Hypothesis {
   const geometry::ShelfModel* model = nullptr;  // the model it was scored against
   // Kept for the fits on the legs' returns (FitShelfToReturns), made only when a choice between
   // models or the returned pose needs them.
-  std::array<Eigen::Vector2d, 4> legs{};  // fitted leg centres
+  std::array<Eigen::Vector2d, 4> legs{};   // fitted leg centres
+  std::array<LegFitResult, 4> leg_fits{};  // their fits (none for a blended leg)
   std::array<int, 4> corner_of_leg{-1, -1, -1, -1};
   geometry::Pose2 T_legs;  // RefineShelfPose's on the fitted legs
   double legs_chi2 = 0.0;  // its chi-square
@@ -221,9 +221,11 @@ double ConfidenceChiSquare(const std::array<Eigen::Vector2d, 4>& legs, const Leg
   return LegsChiSquare(legs, set.count, model, fit.corner_of_leg, refined.T_lidar_shelf, sigma);
 }
 
-// The legs of a set as FitShelfToReturns reads them: each leg's returns, its outline and the
-// scan's range noise; a blended leg by its assumed centre (LegSigmas).
-std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
+// The legs of a set as FitShelfToReturns reads them: each leg's returns, its outline's
+// silhouette term and possible blends as its fit weighed them (`leg_fits`) and the scan's range
+// noise; a blended leg by its assumed centre (LegSigmas).
+std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs,
+                                   const std::array<LegFitResult, 4>& leg_fits, const LegSet& set,
                                    const std::array<int, 4>& corner_of_leg, const ScoreInputs& in) {
   const std::array<LegSigma, 4> sigma = LegSigmas(legs, set, in);
   std::vector<LegReturns> out;
@@ -236,10 +238,9 @@ std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs, c
       r.centre_sigma = sigma[i];
     } else {
       r.points = &c.points;
-      r.silhouette = MakeSilhouetteTerm(c.points, c.edges, in.config.leg_fit);
+      r.silhouette = leg_fits[i].silhouette;
       r.range_sigma_m = in.range_noise_m;
-      r.mixed =
-          FindMixedEdges(c.points, c.edges, MixedEdgeNoise(in.range_noise_m, in.config.leg_fit));
+      r.mixed = leg_fits[i].mixed;
     }
     out.push_back(r);
   }
@@ -284,11 +285,13 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     const Cluster& c = in.pre.candidates[set.legs[i]];
     // A leg seen only blended with its background (CompleteLegSets): on its returns' bearing,
     // at the range the completed shelf puts it.
-    legs[i] = c.assumed_range_m ? AssumedCentre(c)
-                                : cache
-                                      .Get(set.legs[i], model, hint, in.pre.candidates,
-                                           config.leg_fit, in.range_noise_m)
-                                      .centre;
+    if (c.assumed_range_m) {
+      legs[i] = AssumedCentre(c);
+    } else {
+      h.leg_fits[i] =
+          cache.Get(set.legs[i], model, hint, in.pre.candidates, config.leg_fit, in.range_noise_m);
+      legs[i] = h.leg_fits[i].centre;
+    }
     rec.legs_blended.push_back(c.assumed_range_m.has_value());
   }
   rec.legs.assign(legs.begin(), legs.begin() + set.count);
@@ -584,8 +587,9 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   // The shelf fitted to a hypothesis' legs' returns (FitShelfToReturns), made once.
   auto on_returns = [&](Hypothesis& h) -> const ShelfReturnFitResult& {
     if (!h.on_returns) {
-      h.on_returns = FitShelfToReturns(SetReturns(h.legs, h.set, h.corner_of_leg, inputs), *h.model,
-                                       h.T_legs, config_.leg_fit);
+      h.on_returns =
+          FitShelfToReturns(SetReturns(h.legs, h.leg_fits, h.set, h.corner_of_leg, inputs),
+                            *h.model, h.T_legs, config_.leg_fit);
     }
     return *h.on_returns;
   };
@@ -738,7 +742,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
         // The returned pose: the shelf fitted to its legs' returns, each leg's range counted
         // less certain by the pull of a surface close behind it (as LegSigmas does).
         geometry::Pose2 T = on_returns(h).T_lidar_shelf;
-        std::vector<LegReturns> returns = SetReturns(h.legs, h.set, h.corner_of_leg, inputs);
+        std::vector<LegReturns> returns =
+            SetReturns(h.legs, h.leg_fits, h.set, h.corner_of_leg, inputs);
         if (WidenForBackground(returns, h.set, inputs)) {
           T = FitShelfToReturns(returns, *h.model, T, config_.leg_fit).T_lidar_shelf;
         }

@@ -241,6 +241,8 @@ LegFitResult FitLeg(const std::vector<ScanPoint>& points, const geometry::LegMod
 
   out.centre = c;
   out.converged = ok;
+  out.silhouette = silhouette;
+  out.mixed = mixed;
   double sum_sq = 0.0;
   for (const auto& q : points) {
     double r[2];

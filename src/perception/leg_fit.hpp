@@ -6,28 +6,11 @@
 
 #include "geometry/shelf_model.hpp"
 #include "perception/detector_config.hpp"
+#include "perception/mixed_returns.hpp"
 #include "perception/preprocess.hpp"
 #include "perception/silhouette_edges.hpp"
 
 namespace shelfdock::perception {
-
-/// One fitted leg (paper 3.3).
-struct LegFitResult {
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< [m] fitted leg centre, lidar frame
-  double axis_yaw = 0.0;       ///< [rad] leg section's x axis (G_h side) used by the fit
-  bool axis_from_pca = false;  ///< the axis came from the points' PCA, not the hint
-  double rms_m = 0.0;          ///< [m] RMS point-to-surface distance at the solution
-  bool converged = false;
-};
-
-/// Main direction (Eq. 3-4: centroid and scatter matrix, largest eigenvector) and the ratio of
-/// the eigenvalues (>= 1; large for points along one face).
-struct PcaDirection {
-  double yaw = 0.0;         ///< [rad]
-  double anisotropy = 1.0;  ///< [-] largest / smallest eigenvalue
-};
-/// Principal axis of the points (PCA) and how elongated they are.
-PcaDirection PrincipalDirection(const std::vector<ScanPoint>& points);
 
 /// What a leg's outline across the beams says about its bearing (the fits' silhouette term): the
 /// bearing of its centre (between the outer beams) or, when one edge is seen and the other side
@@ -39,6 +22,27 @@ struct SilhouetteTerm {
   int edge_side = 0;       ///< one edge holds: -1 the smaller bearing, +1 the larger; 0 the centre
   double edge_rad = 0.0;   ///< [rad] that edge's bearing relative to mid_rad
 };
+
+/// One fitted leg (paper 3.3).
+struct LegFitResult {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< [m] fitted leg centre, lidar frame
+  double axis_yaw = 0.0;       ///< [rad] leg section's x axis (G_h side) used by the fit
+  bool axis_from_pca = false;  ///< the axis came from the points' PCA, not the hint
+  double rms_m = 0.0;          ///< [m] RMS point-to-surface distance at the solution
+  bool converged = false;
+  SilhouetteTerm silhouette;  ///< what its outline said of its bearing (MakeSilhouetteTerm)
+  MixedEdges mixed;           ///< its outer returns weighed as possible blends (FindMixedEdges)
+};
+
+/// Main direction (Eq. 3-4: centroid and scatter matrix, largest eigenvector) and the ratio of
+/// the eigenvalues (>= 1; large for points along one face).
+struct PcaDirection {
+  double yaw = 0.0;         ///< [rad]
+  double anisotropy = 1.0;  ///< [-] largest / smallest eigenvalue
+};
+/// Principal axis of the points (PCA) and how elongated they are.
+PcaDirection PrincipalDirection(const std::vector<ScanPoint>& points);
+
 /// The silhouette term of a leg's returns (beam order) and its outline's edges (FitLeg explains
 /// when one edge holds instead of the centre).
 SilhouetteTerm MakeSilhouetteTerm(const std::vector<ScanPoint>& points,
