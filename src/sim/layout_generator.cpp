@@ -38,7 +38,7 @@ void BuildLegsWithErrors(World& world, std::uint64_t seed, std::uint64_t stream,
     }
     built.emplace_back(shelf.id, std::move(legs));
   }
-  for (auto& [id, legs] : built) world.SetLegsAsBuilt(id, std::move(legs));
+  world.SetLegsAsBuilt(std::move(built));
 }
 
 /// The scene's sensor: a drawn LiDAR with the scene's range noise.

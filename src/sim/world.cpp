@@ -73,10 +73,12 @@ bool World::SetShelfPose(int id, const geometry::Pose2& T_world_shelf) {
   return true;
 }
 
-bool World::SetLegsAsBuilt(int id, std::vector<geometry::Pose2> legs_as_built) {
-  ShelfInstance* shelf = FindShelf(id);
-  if (shelf == nullptr) return false;
-  shelf->legs_as_built = std::move(legs_as_built);
+bool World::SetLegsAsBuilt(
+    std::vector<std::pair<int, std::vector<geometry::Pose2>>> legs_by_shelf) {
+  for (const auto& [id, legs] : legs_by_shelf) {
+    if (FindShelf(id) == nullptr) return false;
+  }
+  for (auto& [id, legs] : legs_by_shelf) FindShelf(id)->legs_as_built = std::move(legs);
   Rebuild();
   return true;
 }

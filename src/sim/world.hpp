@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "sim/obstacle_grid.hpp"
@@ -28,9 +29,10 @@ class World {
 
   /// Moves a shelf (e.g. carried by the robot after the lift). Returns false for unknown ids.
   bool SetShelfPose(int id, const geometry::Pose2& T_world_shelf);
-  /// Gives a shelf's legs their as-built places (ShelfInstance::legs_as_built). Returns false
-  /// for unknown ids.
-  bool SetLegsAsBuilt(int id, std::vector<geometry::Pose2> legs_as_built);
+  /// Gives shelves' legs their as-built places (ShelfInstance::legs_as_built), shelf id and legs
+  /// each, and builds the ray-casting grid once. Returns false, changing nothing, when an id is
+  /// unknown.
+  bool SetLegsAsBuilt(std::vector<std::pair<int, std::vector<geometry::Pose2>>> legs_by_shelf);
   /// Removes a shelf (e.g. lifted off the floor). Returns false for unknown ids.
   bool RemoveShelf(int id);
 

@@ -34,6 +34,7 @@ TEST(WorldTest, LegFootprintsAreTheModelsLegCentresInTheWorld) {
 
 // A shelf as built: leg 1 stands 8 mm and -5 mm off its design place in the shelf's frame and
 // turned by 0.1 rad, the others where the model puts them; the ray-castable outline moves with it.
+// A call naming an unknown shelf among others changes none of them.
 TEST(WorldTest, LegsAsBuiltMoveAndTurnEachLeg) {
   World world;
   const geometry::Pose2 T_world_shelf(2.0, -1.0, 0.3);
@@ -42,8 +43,9 @@ TEST(WorldTest, LegsAsBuiltMoveAndTurnEachLeg) {
   const auto before = world.static_grid().primitives();
   std::vector<geometry::Pose2> built(4);
   built[1] = geometry::Pose2(0.008, -0.005, 0.1);
-  ASSERT_TRUE(world.SetLegsAsBuilt(7, built));
-  EXPECT_FALSE(world.SetLegsAsBuilt(8, built));
+  EXPECT_FALSE(world.SetLegsAsBuilt({{7, built}, {8, built}}));
+  EXPECT_EQ(world.LegFootprints(7)[1].T_world_leg.yaw, design[1].T_world_leg.yaw);
+  ASSERT_TRUE(world.SetLegsAsBuilt({{7, built}}));
   const auto legs = world.LegFootprints(7);
   ASSERT_EQ(legs.size(), 4u);
   const auto centres = shelfdock::testing::PaperShelf2().LegCentres();
