@@ -88,6 +88,8 @@ nlohmann::json HypothesisToJson(const perception::HypothesisRecord& h) {
           {"yaw", h.T_lidar_shelf.yaw},
           {"legs", legs},
           {"legs_blended", h.legs_blended},
+          {"legs_flush", h.legs_flush},
+          {"legs_edge_blends", h.legs_edge_blends},
           {"err_sum", h.err_sum},
           {"confidence", h.confidence},
           {"legs_visible", h.legs_visible},
@@ -96,7 +98,8 @@ nlohmann::json HypothesisToJson(const perception::HypothesisRecord& h) {
           {"interior_points", h.interior_points},
           {"foreign_legs_inside", h.foreign_legs_inside},
           {"leg_width_error", h.leg_width_error_m},
-          {"leg_width_bias", h.leg_width_bias_m}};
+          {"leg_width_bias", h.leg_width_bias_m},
+          {"width_bloom_rad", h.width_bloom_rad}};
 }
 
 nlohmann::json DetectionResultToJson(const perception::DetectionResult& result, bool explain,

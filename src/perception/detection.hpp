@@ -115,6 +115,13 @@ struct HypothesisRecord {
   /// behind it, so it stands on its returns' bearing at the range the completed shelf puts it
   /// (CompleteLegSets; its range was not measured), false where its own returns placed it.
   std::vector<bool> legs_blended;
+  /// Per leg of `legs`: true where the completion took the leg's returns off something small
+  /// standing flush beside it (completion.flush_object_max_m), trimmed to the leg.
+  std::vector<bool> legs_flush;
+  /// Per leg of `legs`: how many of its outer returns (0-2) its fit weighed as possible blends of
+  /// the leg and the surface past its edge (FindMixedEdges; 0 for a blended leg, and for all
+  /// with leg_fit.mixed_edge_share 0).
+  std::vector<int> legs_edge_blends;
   double err_sum = 0.0;     ///< [m] Eq. 2 on the fitted legs (0 when the fit failed)
   double confidence = 0.0;  ///< 0 when rejected before the evidence was weighed
   int legs_visible = 0;
@@ -124,6 +131,7 @@ struct HypothesisRecord {
   int foreign_legs_inside = 0;
   double leg_width_error_m = 0.0;
   double leg_width_bias_m = 0.0;
+  double width_bloom_rad = 0.0;  ///< [rad] the bloom its leg widths were granted (ShelfEvidence)
   Verdict verdict = Verdict::kFit;
 };
 

@@ -293,6 +293,12 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
       legs[i] = h.leg_fits[i].centre;
     }
     rec.legs_blended.push_back(c.assumed_range_m.has_value());
+    rec.legs_flush.push_back(c.flush);
+    const MixedEdges& mixed = h.leg_fits[i].mixed;
+    rec.legs_edge_blends.push_back(config.leg_fit.mixed_edge_share > 0.0
+                                       ? static_cast<int>(mixed.first_gap_m > 0.0) +
+                                             static_cast<int>(mixed.last_gap_m > 0.0)
+                                       : 0);
   }
   rec.legs.assign(legs.begin(), legs.begin() + set.count);
   const auto fit = FitShelf(legs, set.count, model, config.shelf_fit);
@@ -368,6 +374,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   rec.foreign_legs_inside = ev.foreign_legs_inside;
   rec.leg_width_error_m = ev.leg_width_error_m;
   rec.leg_width_bias_m = ev.leg_width_bias_m;
+  rec.width_bloom_rad = ev.width_bloom_rad;
   // A beam wider than a thin leg (a TiM571's 0.87 deg spot on a 26 mm leg at 2-4 m) returns one
   // echo between the leg and what stands close behind it: a candidate centimetres behind the
   // leg. Two such legs of a round-legged shelf in front of a wall made rectangular shelves of

@@ -210,6 +210,7 @@ bool StandsAlone(const std::vector<ScanPoint>& points, Cluster& c, const Surroun
     std::erase_if(trimmed->points,
                   [&](const ScanPoint& q) { return (q.p - edge.p).norm() > width; });
     SetShape(*trimmed);
+    trimmed->flush = true;
   }
   const Cluster& leg_cut = trimmed ? *trimmed : c;
   const std::size_t begin = IndexOfBeam(points, leg_cut.points.front().beam);

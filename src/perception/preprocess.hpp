@@ -28,6 +28,9 @@ struct Cluster {
   /// Cut from a surface it stands in front of (SurfaceProtrusions), inside a cluster no other
   /// rule would have split: CompleteLegSets looks at its returns as at any wall's.
   bool from_surface = false;
+  /// Completed as a leg flush with something small beside it (CompleteLegSets,
+  /// completion.flush_object_max_m): its returns trimmed to the leg's extent from its free edge.
+  bool flush = false;
 };
 
 /// Where a blended leg (Cluster::assumed_range_m set) stands: at its assumed range on the

@@ -347,6 +347,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   if (vouched && config.width_bloom_own_legs) {
     bloom = std::max(bloom, std::min(OwnLegsBloom(widths, alpha), config.width_bloom_max_rad));
   }
+  ev.width_bloom_rad = bloom;
   std::vector<int> own_spans, excused_spans;
   double width_bias_sum = 0.0;
   std::array<double, 4> width_errors{};

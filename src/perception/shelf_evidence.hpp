@@ -52,7 +52,9 @@ struct ShelfEvidence {
   double leg_width_bias_m = 0;   ///< mean (seen width - model leg's silhouette) over its legs
                                  ///< with both outline edges seen (or seen too wide)
   double leg_width_bias_excess_m = 0;  ///< |leg_width_bias_m| beyond its allowance
-  double confidence = 0.0;             ///< [0, 1], see ShelfConfidence
+  double width_bloom_rad = 0.0;  ///< [rad] the bloom taken off its legs' widths (the scan's or
+                                 ///< its own legs' common bloom; 0 where no map vouches for it)
+  double confidence = 0.0;       ///< [0, 1], see ShelfConfidence
   /// The map vouches for the shelf (GatherEvidence's `vouched`): objects inside weigh less.
   bool vouched = false;
 };

@@ -134,6 +134,21 @@ TEST(DetectionJson, AHypothesisSaysWhichLegsWereSeenOnlyBlended) {
   EXPECT_EQ(j["legs"][2][0].get<double>(), 4.1);
 }
 
+// ... and, leg by leg, whether the completion took it off something flush beside it and how many
+// of its outer returns its fit weighed as possible blends; and the bloom its widths were granted.
+TEST(DetectionJson, AHypothesisSaysWhichLegsWereFlushAndWhichEdgesMayBeBlends) {
+  perception::HypothesisRecord h;
+  h.legs = {Eigen::Vector2d(2.8, 0.6), Eigen::Vector2d(2.9, -0.6), Eigen::Vector2d(4.1, -0.7)};
+  h.legs_blended = {false, false, false};
+  h.legs_flush = {false, true, false};
+  h.legs_edge_blends = {0, 1, 2};
+  h.width_bloom_rad = 0.004;
+  const nlohmann::json j = HypothesisToJson(h);
+  EXPECT_EQ(j["legs_flush"], nlohmann::json::parse("[false, true, false]")) << j.dump();
+  EXPECT_EQ(j["legs_edge_blends"], nlohmann::json::parse("[0, 1, 2]")) << j.dump();
+  EXPECT_EQ(j["width_bloom_rad"].get<double>(), 0.004);
+}
+
 // stats.rejected has one count per rejection verdict, under the verdict's own name (the name
 // `detect --explain` gives each hypothesis), so a user can match the two.
 TEST(DetectionJson, EachRejectionCountStandsUnderItsVerdictsName) {
