@@ -68,9 +68,13 @@ struct DetectJob {
       (*page_scan)["detections"] = out["detections"];
       (*page_scan)["stats"] = out["stats"];
       (*page_scan)["hypotheses"] = out["hypotheses"];
+      (*page_scan)["candidates"] = out["candidates"];
       (*page_scan)["stamp"] = scan.stamp;
     }
-    if (!explain) out.erase("hypotheses");
+    if (!explain) {
+      out.erase("hypotheses");
+      out.erase("candidates");
+    }
     return out;
   }
 };

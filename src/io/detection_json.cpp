@@ -102,6 +102,13 @@ nlohmann::json HypothesisToJson(const perception::HypothesisRecord& h) {
           {"width_bloom_rad", h.width_bloom_rad}};
 }
 
+nlohmann::json CandidateToJson(const perception::CandidateRecord& c) {
+  return {{"x", c.centre.x()},    {"y", c.centre.y()},
+          {"returns", c.returns}, {"beams", {c.first_beam, c.last_beam}},
+          {"extent", c.extent_m}, {"completed", c.completed},
+          {"blended", c.blended}, {"flush", c.flush}};
+}
+
 nlohmann::json DetectionResultToJson(const perception::DetectionResult& result, bool explain,
                                      const std::optional<geometry::Pose2>& T_base_lidar,
                                      const std::optional<geometry::Pose2>& T_map_base) {
@@ -113,6 +120,9 @@ nlohmann::json DetectionResultToJson(const perception::DetectionResult& result, 
     nlohmann::json hyps = nlohmann::json::array();
     for (const auto& h : result.hypotheses) hyps.push_back(HypothesisToJson(h));
     out["hypotheses"] = hyps;
+    nlohmann::json candidates = nlohmann::json::array();
+    for (const auto& c : result.candidates) candidates.push_back(CandidateToJson(c));
+    out["candidates"] = candidates;
   }
   return out;
 }

@@ -28,9 +28,13 @@ nlohmann::json DetectionStatsToJson(const perception::DetectionStats& s);
 /// One explained hypothesis (`detect --explain`): its legs, evidence and verdict.
 nlohmann::json HypothesisToJson(const perception::HypothesisRecord& h);
 
+/// One leg candidate as the search saw it (`detect --explain`): its centre, returns, beams,
+/// extent and whether the completion cut it (blended, flush).
+nlohmann::json CandidateToJson(const perception::CandidateRecord& c);
+
 /// The whole line `shelfdock detect` prints for one scan: {"detections": [...], "stats": {...}}
-/// and, when the result was explained, "hypotheses". The CLI and the Python module both use it,
-/// so their fields cannot drift apart.
+/// and, when the result was explained, "hypotheses" and "candidates". The CLI and the Python
+/// module both use it, so their fields cannot drift apart.
 nlohmann::json DetectionResultToJson(
     const perception::DetectionResult& result, bool explain,
     const std::optional<geometry::Pose2>& T_base_lidar = std::nullopt,

@@ -135,6 +135,21 @@ struct HypothesisRecord {
   Verdict verdict = Verdict::kFit;
 };
 
+/// A leg candidate as the geometric search (3.2) saw it (`detect --explain`): where no leg set
+/// forms, these tell whether a leg in sight became no candidate or stood off its place.
+struct CandidateRecord {
+  /// [m] the centre the search used: the returns' mean pushed back from the sensor by half the
+  /// thinnest model leg's depth, or a blended leg's assumed centre
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  int returns = 0;         ///< returns it is made of
+  int first_beam = 0;      ///< beam index of its first return (beam order)
+  int last_beam = 0;       ///< ... and of its last
+  double extent_m = 0.0;   ///< [m] largest distance of a return from the first one
+  bool completed = false;  ///< cut at a predicted corner by the completion (CompleteLegSets)
+  bool blended = false;    ///< ... seen only blended with its background (assumed range)
+  bool flush = false;      ///< ... taken off something small flush beside it
+};
+
 /// Everything Detector::Detect returns for one scan.
 struct DetectionResult {
   std::vector<Detection> detections;  ///< best first; with a preset, nearest to it first
@@ -142,6 +157,8 @@ struct DetectionResult {
   /// Every hypothesis with its evidence and verdict; filled only when asked for
   /// (Detector::Detect with explain = true).
   std::vector<HypothesisRecord> hypotheses;
+  /// Every leg candidate (the scan's, then the completion's); filled only with explain.
+  std::vector<CandidateRecord> candidates;
 };
 
 }  // namespace shelfdock::perception

@@ -796,6 +796,22 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
     // Returned only within the map's own error (PresetGateConfig::map_error_m).
     result.detections = compete(gate.map_error_m, gate.map_error_yaw_rad);
   }
+  if (explain) {
+    const int scanned = stats.leg_candidates;
+    for (std::size_t i = 0; i < pre.candidates.size(); ++i) {
+      const Cluster& c = pre.candidates[i];
+      CandidateRecord r;
+      r.centre = centres[i];
+      r.returns = static_cast<int>(c.points.size());
+      r.first_beam = c.points.empty() ? 0 : c.points.front().beam;
+      r.last_beam = c.points.empty() ? 0 : c.points.back().beam;
+      r.extent_m = c.extent_m;
+      r.completed = static_cast<int>(i) >= scanned;
+      r.blended = c.assumed_range_m.has_value();
+      r.flush = c.flush;
+      result.candidates.push_back(r);
+    }
+  }
   return result;
 }
 

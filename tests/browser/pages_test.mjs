@@ -113,6 +113,8 @@ try {
     for (const l of dataShelf.legs) if (hasColour(await pixelsAt(page, "shelfdockExplain", l[0], l[1]), GREEN)) ++legsGreen;
     check(legsGreen === dataShelf.legs.length, `explain: canvas shows the returned legs at their fitted centres (${legsGreen}/${dataShelf.legs.length})`);
     check(s.drawn.candidates.length === data.scans[0].stats.leg_candidates, `explain: ${s.drawn.candidates.length} leg candidates drawn, stats say ${data.scans[0].stats.leg_candidates}`);
+    check(data.scans[0].candidates.length >= data.scans[0].stats.leg_candidates, `explain: the page lists ${data.scans[0].candidates.length} candidates the search saw, stats say ${data.scans[0].stats.leg_candidates} from the scan`);
+    check(s.drawn.completed.length === data.scans[0].candidates.filter((c) => c.completed).length, `explain: ${s.drawn.completed.length} legs the completion cut drawn`);
     check(s.drawn.points === data.scans[0].points.length && s.drawn.points > 100, `explain: ${s.drawn.points} points drawn`);
     const answer = await page.textContent("#answer");
     check(answer.startsWith("1 shelf found: t1-rect-1075x883"), `explain: answer "${answer.slice(0, 60)}..."`);

@@ -149,6 +149,34 @@ TEST(DetectionJson, AHypothesisSaysWhichLegsWereFlushAndWhichEdgesMayBeBlends) {
   EXPECT_EQ(j["width_bloom_rad"].get<double>(), 0.004);
 }
 
+// `detect --explain` also lists the leg candidates: each one's search centre, returns, first and
+// last beam, extent, and whether the completion cut it (blended, flush); none without explain.
+TEST(DetectionJson, ExplainListsTheLegCandidates) {
+  perception::DetectionResult result;
+  perception::CandidateRecord c;
+  c.centre = Eigen::Vector2d(3.25, -0.5);
+  c.returns = 3;
+  c.first_beam = 398;
+  c.last_beam = 400;
+  c.extent_m = 0.04;
+  c.completed = true;
+  c.flush = true;
+  result.candidates.push_back(c);
+  const nlohmann::json j = DetectionResultToJson(result, true);
+  ASSERT_TRUE(j.contains("candidates")) << j.dump();
+  ASSERT_EQ(j["candidates"].size(), 1u);
+  const nlohmann::json& k = j["candidates"][0];
+  EXPECT_EQ(k["x"].get<double>(), 3.25);
+  EXPECT_EQ(k["y"].get<double>(), -0.5);
+  EXPECT_EQ(k["returns"].get<int>(), 3);
+  EXPECT_EQ(k["beams"], nlohmann::json::parse("[398, 400]"));
+  EXPECT_EQ(k["extent"].get<double>(), 0.04);
+  EXPECT_TRUE(k["completed"].get<bool>());
+  EXPECT_FALSE(k["blended"].get<bool>());
+  EXPECT_TRUE(k["flush"].get<bool>());
+  EXPECT_FALSE(DetectionResultToJson(result, false).contains("candidates"));
+}
+
 // stats.rejected has one count per rejection verdict, under the verdict's own name (the name
 // `detect --explain` gives each hypothesis), so a user can match the two.
 TEST(DetectionJson, EachRejectionCountStandsUnderItsVerdictsName) {
