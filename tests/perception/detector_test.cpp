@@ -111,19 +111,27 @@ TEST(DetectorTest, FindsEveryModelAtAllDistancesAndHeadings) {
   EXPECT_GE(found, cases * 95 / 100);
 }
 
+// A room with `model` at `truth` (lidar frame) and a thin wall segment (too long for a leg)
+// between the LiDAR and the shelf's first leg, whose centre goes to `hidden`.
+sim::World ShelfWithOneLegHidden(const geometry::ShelfModel& model, const geometry::Pose2& truth,
+                                 Eigen::Vector2d* hidden) {
+  sim::World world;
+  testing::AddRoom(world);
+  world.AddShelf(1, model, truth);
+  *hidden = truth * model.LegCentres()[0];
+  const Eigen::Vector2d mid = 0.8 * *hidden;
+  const Eigen::Vector2d across(-hidden->normalized().y(), hidden->normalized().x());
+  world.AddWall({mid - 0.07 * across, mid + 0.07 * across});
+  return world;
+}
+
 TEST(DetectorTest, OneLegHiddenGivesAThreeLegDetection) {
   const auto models = PaperModels();
   const Detector detector(models);
   const auto& model = models[1];
   const geometry::Pose2 truth(2.5, 0.3, 0.6);
-  sim::World world;
-  testing::AddRoom(world);
-  world.AddShelf(1, model, truth);
-  // A thin wall segment (too long for a leg) between the LiDAR and the nearest leg.
-  const Eigen::Vector2d leg = truth * model.LegCentres()[0];
-  const Eigen::Vector2d mid = 0.8 * leg;
-  const Eigen::Vector2d across(-leg.normalized().y(), leg.normalized().x());
-  world.AddWall({mid - 0.07 * across, mid + 0.07 * across});
+  Eigen::Vector2d hidden;
+  const sim::World world = ShelfWithOneLegHidden(model, truth, &hidden);
   const DetectionResult r =
       detector.Detect(SimScan(world, {}, 7), truth * geometry::Pose2(0.1, -0.1, 0.05));
   ASSERT_FALSE(r.detections.empty());
@@ -145,13 +153,8 @@ TEST(DetectorTest, ExplainListsTheCandidatesTheSearchSaw) {
   const Detector detector(models);
   const auto& model = models[1];
   const geometry::Pose2 truth(2.5, 0.3, 0.6);
-  sim::World world;
-  testing::AddRoom(world);
-  world.AddShelf(1, model, truth);
-  const Eigen::Vector2d hidden = truth * model.LegCentres()[0];
-  const Eigen::Vector2d mid = 0.8 * hidden;
-  const Eigen::Vector2d across(-hidden.normalized().y(), hidden.normalized().x());
-  world.AddWall({mid - 0.07 * across, mid + 0.07 * across});
+  Eigen::Vector2d hidden;
+  const sim::World world = ShelfWithOneLegHidden(model, truth, &hidden);
   sim::LidarConfig lidar;
   lidar.range_noise_sigma_m = 0.003;
   const geometry::LaserScan scan = SimScan(world, {}, 7, lidar);
