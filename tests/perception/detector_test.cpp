@@ -111,35 +111,36 @@ TEST(DetectorTest, FindsEveryModelAtAllDistancesAndHeadings) {
   EXPECT_GE(found, cases * 95 / 100);
 }
 
-// A room with `model` at `truth` (lidar frame) and a thin wall segment (too long for a leg)
-// between the LiDAR and the shelf's first leg, whose centre goes to `hidden`.
-sim::World ShelfWithOneLegHidden(const geometry::ShelfModel& model, const geometry::Pose2& truth,
-                                 Eigen::Vector2d* hidden) {
+// The paper's 1075 x 883 in a room at `truth` (lidar frame) with a thin wall segment (too long for
+// a leg) between the LiDAR and the shelf's first leg, whose centre is `hidden`; the detector of the
+// paper's models and a preset 0.14 m / 0.05 rad off the truth.
+struct OneLegHiddenScene {
+  std::vector<geometry::ShelfModel> models = PaperModels();
+  Detector detector{models};
+  geometry::ShelfModel model = models[1];
+  geometry::Pose2 truth{2.5, 0.3, 0.6};
+  geometry::Pose2 preset = truth * geometry::Pose2(0.1, -0.1, 0.05);
+  Eigen::Vector2d hidden = truth * model.LegCentres()[0];
   sim::World world;
-  testing::AddRoom(world);
-  world.AddShelf(1, model, truth);
-  *hidden = truth * model.LegCentres()[0];
-  const Eigen::Vector2d mid = 0.8 * *hidden;
-  const Eigen::Vector2d across(-hidden->normalized().y(), hidden->normalized().x());
-  world.AddWall({mid - 0.07 * across, mid + 0.07 * across});
-  return world;
-}
+
+  OneLegHiddenScene() {
+    testing::AddRoom(world);
+    world.AddShelf(1, model, truth);
+    const Eigen::Vector2d mid = 0.8 * hidden;
+    const Eigen::Vector2d across(-hidden.normalized().y(), hidden.normalized().x());
+    world.AddWall({mid - 0.07 * across, mid + 0.07 * across});
+  }
+};
 
 TEST(DetectorTest, OneLegHiddenGivesAThreeLegDetection) {
-  const auto models = PaperModels();
-  const Detector detector(models);
-  const auto& model = models[1];
-  const geometry::Pose2 truth(2.5, 0.3, 0.6);
-  Eigen::Vector2d hidden;
-  const sim::World world = ShelfWithOneLegHidden(model, truth, &hidden);
-  const DetectionResult r =
-      detector.Detect(SimScan(world, {}, 7), truth * geometry::Pose2(0.1, -0.1, 0.05));
+  const OneLegHiddenScene s;
+  const DetectionResult r = s.detector.Detect(SimScan(s.world, {}, 7), s.preset);
   ASSERT_FALSE(r.detections.empty());
   const Detection& d = r.detections[0];
-  EXPECT_EQ(d.model, model.name);
+  EXPECT_EQ(d.model, s.model.name);
   EXPECT_EQ(d.legs_used, 3);
-  EXPECT_LT(geometry::Distance(d.T_lidar_shelf, truth), kCentreTol);
-  EXPECT_LT(std::abs(geometry::AngleDiff(d.T_lidar_shelf.yaw, truth.yaw)), kYawTol);
+  EXPECT_LT(geometry::Distance(d.T_lidar_shelf, s.truth), kCentreTol);
+  EXPECT_LT(std::abs(geometry::AngleDiff(d.T_lidar_shelf.yaw, s.truth.yaw)), kYawTol);
 }
 
 // `detect --explain` lists the leg candidates the search saw, so a user can tell a leg that never
@@ -149,17 +150,11 @@ TEST(DetectorTest, OneLegHiddenGivesAThreeLegDetection) {
 // noise), the hidden one none within 10 cm; every candidate was the scan's own (none completed),
 // and there are as many as stats.leg_candidates. Without explain the list stays empty.
 TEST(DetectorTest, ExplainListsTheCandidatesTheSearchSaw) {
-  const auto models = PaperModels();
-  const Detector detector(models);
-  const auto& model = models[1];
-  const geometry::Pose2 truth(2.5, 0.3, 0.6);
-  Eigen::Vector2d hidden;
-  const sim::World world = ShelfWithOneLegHidden(model, truth, &hidden);
+  const OneLegHiddenScene s;
   sim::LidarConfig lidar;
   lidar.range_noise_sigma_m = 0.003;
-  const geometry::LaserScan scan = SimScan(world, {}, 7, lidar);
-  const geometry::Pose2 preset = truth * geometry::Pose2(0.1, -0.1, 0.05);
-  const DetectionResult r = detector.Detect(scan, preset, /*explain=*/true);
+  const geometry::LaserScan scan = SimScan(s.world, {}, 7, lidar);
+  const DetectionResult r = s.detector.Detect(scan, s.preset, /*explain=*/true);
   ASSERT_FALSE(r.detections.empty());
   ASSERT_EQ(static_cast<int>(r.candidates.size()), r.stats.leg_candidates);
   auto nearest = [&](const Eigen::Vector2d& leg) {
@@ -167,17 +162,17 @@ TEST(DetectorTest, ExplainListsTheCandidatesTheSearchSaw) {
     for (const CandidateRecord& c : r.candidates) best = std::min(best, (c.centre - leg).norm());
     return best;
   };
-  const auto corners = model.LegCentres();
+  const auto corners = s.model.LegCentres();
   for (std::size_t k = 1; k < corners.size(); ++k) {
-    EXPECT_LT(nearest(truth * corners[k]), 0.02) << "leg " << k;
+    EXPECT_LT(nearest(s.truth * corners[k]), 0.02) << "leg " << k;
   }
-  EXPECT_GT(nearest(hidden), 0.10);
+  EXPECT_GT(nearest(s.hidden), 0.10);
   for (const CandidateRecord& c : r.candidates) {
     EXPECT_FALSE(c.completed);
     EXPECT_GE(c.returns, 1);
     EXPECT_GE(c.last_beam, c.first_beam);
   }
-  EXPECT_TRUE(detector.Detect(scan, preset).candidates.empty());
+  EXPECT_TRUE(s.detector.Detect(scan, s.preset).candidates.empty());
 }
 
 // 1075 x 883 and 1080 x 856 differ by 5 mm in length and 27 mm in width: legs near both pass
