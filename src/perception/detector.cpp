@@ -803,8 +803,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
       CandidateRecord r;
       r.centre = centres[i];
       r.returns = static_cast<int>(c.points.size());
-      r.first_beam = c.points.empty() ? 0 : c.points.front().beam;
-      r.last_beam = c.points.empty() ? 0 : c.points.back().beam;
+      r.first_beam = c.points.front().beam;  // a candidate has returns
+      r.last_beam = c.points.back().beam;
       r.extent_m = c.extent_m;
       r.completed = static_cast<int>(i) >= scanned;
       r.blended = c.assumed_range_m.has_value();
