@@ -87,6 +87,7 @@ void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
 void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("present_margin_m", c.present_margin_m);
   f.Read("max_present_object_m", c.max_present_object_m);
+  f.Read("present_in_core", c.present_in_core);
   f.Read("through_margin_m", c.through_margin_m);
   f.Read("min_through_beams", c.min_through_beams);
   f.Read("leg_position_tolerance_m", c.leg_position_tolerance_m);

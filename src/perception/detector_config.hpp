@@ -141,6 +141,12 @@ struct EvidenceConfig {
                                       ///< there, not a leg (with at most a person's leg beside
                                       ///< it); a 3-leg shelf nothing vouches for is then not
                                       ///< returned; 0: off
+  bool present_in_core = true;        ///< such returns count only when the beams through the
+                                      ///< leg's core (leg_position_tolerance_m, or the corner's
+                                      ///< error if more, inside its edge) that passed beyond it
+                                      ///< (min_through_beams or more) do not outnumber those of
+                                      ///< them in the core: else they lie beside the leg, which
+                                      ///< is not there
   double through_margin_m = 0.15;     ///< [m] returns this far beyond a leg: the beam went through
   int min_through_beams = 2;          ///< [-] beams through a leg that prove it absent
   double leg_position_tolerance_m = 0.005;  ///< [m] error of a predicted leg position: only

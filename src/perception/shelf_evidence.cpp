@@ -35,7 +35,8 @@ struct LegLook {
 // return hides it (excused), returns well beyond it say the beams passed where it should stand;
 // when both, the beams that passed decide.
 LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
-                  const PreprocessOutput& pre, double alpha, const EvidenceConfig& config) {
+                  const PreprocessOutput& pre, double alpha, double corner_error_m,
+                  const EvidenceConfig& config) {
   LegLook look;
   const double bearing = std::atan2(leg.y(), leg.x());
   if (!pre.points.empty()) {
@@ -51,7 +52,13 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
   const double half_leg = 0.5 * std::min(model.length_m, model.width_m);
   const double wide = std::atan2(half_leg, range) + 0.5 * alpha;
   const double narrow = std::atan2(half_leg - config.leg_position_tolerance_m, range);
+  // The core whose beams must hit the leg if it stands at the corner: the silhouette narrowed by
+  // the corner's own error as well (see `beside`, below); none when that error is half the leg.
+  const double core_half = half_leg - std::max(config.leg_position_tolerance_m, corner_error_m);
+  const double core = core_half > 0.0 ? std::atan2(core_half, range) : -1.0;
   int present = 0;
+  int present_in_core = 0;  // of them, those in the core
+  int through_core = 0;     // beams of the core that passed well beyond the leg
   // Returns that fall well inside the silhouette: when the leg is far or thin there may be only
   // one, and then one beam through it is all the evidence the scan can give.
   int narrow_returns = 0;
@@ -68,6 +75,7 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
     if (off <= narrow) ++narrow_returns;
     if (std::abs(q.range - range) <= config.present_margin_m) {
       ++present;
+      if (off <= core) ++present_in_core;
       // The cluster's extent only matters to the large-object rule (max_present_object_m).
       const int span = config.max_present_object_m > 0.0 ? SpanOfPoint(pre.spans, i) : -1;
       if (span >= 0) {
@@ -78,9 +86,19 @@ LegLook LookAtLeg(const Eigen::Vector2d& leg, const geometry::LegModel& model,
       look.occluder_spans.push_back(SpanOfPoint(pre.spans, i));
     } else if (q.range > range + config.through_margin_m && off <= narrow) {
       beyond.push_back(i);
+      if (off <= core) ++through_core;
     }
   }
-  if (present > 0) {
+  // Returns at the leg's range say it is there, unless they stand beside it: the beams through
+  // its core mostly passed on beyond it (an object at the window's edge a few centimetres from
+  // the corner, as a post beside the corner of three posts in clutter; a leg at the predicted
+  // place would have returned the core's beams itself). Then the beams that passed decide, below.
+  // The core allows for the corner's error (corner_error_m, from the legs' RMS off their fitted
+  // corners): three legs fitted centimetres off their model (a round-legged shelf 0.7 m away
+  // under a scanner's range bias) place the fourth corner about as far off, beside its real leg.
+  const bool beside = config.present_in_core &&
+                      through_core >= std::max(config.min_through_beams, present_in_core + 1);
+  if (present > 0 && !beside) {
     look.view = LegView::kPresent;
     return look;
   }
@@ -327,8 +345,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              const geometry::ShelfModel& model,
                              const std::array<int, 4>& corner_candidate,
                              const PreprocessOutput& pre, const std::vector<SpanRole>& span_roles,
-                             double angle_increment_rad, bool vouched,
-                             const EvidenceConfig& config) {
+                             double angle_increment_rad, bool vouched, const EvidenceConfig& config,
+                             double corner_error_m) {
   ShelfEvidence ev;
   ev.vouched = vouched;
   const double alpha = std::abs(angle_increment_rad);
@@ -407,7 +425,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       }
       continue;
     }
-    LegLook look = LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, config);
+    LegLook look =
+        LookAtLeg(T_lidar_shelf * corners[k], model.leg, pre, alpha, corner_error_m, config);
     ev.legs[k] = look.view;
     if (look.view == LegView::kUnobserved && look.in_view) ++ev.legs_unobserved_in_view;
     if (look.view == LegView::kPresent && config.max_present_object_m > 0.0 &&

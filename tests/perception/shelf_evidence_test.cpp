@@ -106,6 +106,52 @@ TEST(ShelfEvidenceTest, APostBesideTheLineOfSightDoesNotHideAnEmptyCorner) {
   EXPECT_GE(beside.stats.rejected.leg_seen_through, 1);
 }
 
+// The three posts 1.5 m ahead (the ideal sensor as above) and a 0.15 m box beside the empty
+// corner: its near face 5 cm in front of the corner's range, its side 2 cm off the corner's
+// line of sight, inside the window around the corner but clear of its core. Its edge returns lie
+// at the leg's range, yet the beams through where the leg would stand reach the wall behind: the
+// corner is seen through and nothing is returned (evidence.present_in_core). Without the rule
+// those returns counted as the fourth leg, present, and the three posts were returned (as with
+// a post beside the corner of three posts in clutter: eval-layouts --no-preset --class clutter
+// --scenes-per-class 3000, seed 1 clutter 2481). A box covering the core stands where the leg
+// would: present, the shelf returned.
+TEST(ShelfEvidenceTest, ReturnsBesideAnEmptyCornerAreNoLegThere) {
+  const auto models = PaperModels();
+  const geometry::Pose2 T_shelf(1.5, 0.1, 0.3);
+  const Eigen::Vector2d corner = T_shelf * models[3].LegCentres()[kEmptyCorner];
+  const Eigen::Vector2d along = corner.normalized();
+  const Eigen::Vector2d across(-along.y(), along.x());
+  sim::LidarConfig ideal;
+  ideal.enable_range_noise = false;
+  ideal.enable_footprint = false;
+  ideal.enable_dropouts = false;
+  constexpr double kSide = 0.15;
+  auto scan_with_box = [&](double side_off_line_m) {
+    sim::World world = ThreeCornerPosts(T_shelf);
+    const Eigen::Vector2d centre =
+        corner + (0.5 * kSide - 0.05) * along + (side_off_line_m + 0.5 * kSide) * across;
+    world.AddBox(
+        {geometry::Pose2(centre.x(), centre.y(), std::atan2(along.y(), along.x())), kSide, kSide});
+    return SimScan(world, {}, 3, ideal);
+  };
+  const Detector detector(models);
+  const auto beside = scan_with_box(0.02);
+  const DetectionResult r = detector.Detect(beside, T_shelf);
+  EXPECT_TRUE(r.detections.empty());
+  EXPECT_GE(r.stats.rejected.leg_seen_through, 1);
+  DetectorConfig off;
+  off.evidence.present_in_core = false;
+  const DetectionResult without_rule = Detector(models, off).Detect(beside, T_shelf);
+  ASSERT_EQ(without_rule.detections.size(), 1u);
+  EXPECT_EQ(without_rule.detections[0].legs_visible, 4);
+  EXPECT_LT(geometry::Distance(without_rule.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
+  // The box's side across the corner's line of sight, 2 cm past it: the core's beams hit it.
+  const DetectionResult covering = detector.Detect(scan_with_box(-0.02), T_shelf);
+  ASSERT_EQ(covering.detections.size(), 1u);
+  EXPECT_EQ(covering.detections[0].legs_visible, 4);
+  EXPECT_LT(geometry::Distance(covering.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
+}
+
 TEST(ShelfEvidenceTest, WithoutAPresetAFourthCornerBehindSomethingElseVouchesForNothing) {
   // The scene above without a preset: nothing says a shelf stands there, and three posts with a
   // box in front of the fourth corner are what clutter makes. Not returned, and counted.
