@@ -75,9 +75,9 @@ enum class SpanRole : char {
 /// `span_roles[s]` tells which clusters belong to some leg set of the search (legs of some
 /// shelf-shaped group): inside a footprint they are the phantom's signature; spans past its end
 /// count as kOther. `vouched`: the map vouches for a shelf there (a preset within its own error).
-/// `corner_error_m` [m]: how far off its legs' places the pose may put a corner (the RMS of its
-/// legs off the fitted corners): beams through a missing leg's core prove it absent only where
-/// the corner is known that well.
+/// `corner_error_m` [m]: how far off the pose may put a corner no candidate stands for (the
+/// detector passes half the legs' RMS off their fitted corners): beams through a missing leg's
+/// core prove it absent only where the corner is known that well.
 ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              const geometry::ShelfModel& model,
                              const std::array<int, 4>& corner_candidate,

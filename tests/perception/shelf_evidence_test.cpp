@@ -152,6 +152,37 @@ TEST(ShelfEvidenceTest, ReturnsBesideAnEmptyCornerAreNoLegThere) {
   EXPECT_LT(geometry::Distance(covering.detections[0].T_lidar_shelf, T_shelf), kCentreTol);
 }
 
+// The core's allowance for the corner's error (GatherEvidence's corner_error_m), on a hand-made
+// scan around an empty corner 1.8 m away: its three middle beams pass through to the background
+// 2 m behind, the next beam either side (21 mm off the corner's line) returns from an object at
+// the corner's range. With the corner known to 5 mm, beams through its core passed: seen through.
+// With the corner known only to 12 mm (a shelf whose legs fit its model a couple of centimetres
+// off) the core keeps one beam, and the returns beside it may be its leg: present; so too with
+// evidence.present_in_core off.
+TEST(ShelfEvidenceTest, TheCoreAllowsForTheCornersError) {
+  const geometry::ShelfModel model = PaperModels()[1];
+  constexpr int kCornerBeam = 40;
+  constexpr double kRange = 1.8;
+  const Eigen::Vector2d corner = testing::BeamPoint(kCornerBeam, kRange).p;
+  const Eigen::Vector2d leg0 = model.LegCentres()[0];
+  const geometry::Pose2 T_lidar_shelf(corner.x() - leg0.x(), corner.y() - leg0.y(), 0.0);
+  PreprocessOutput pre;
+  for (int j = -4; j <= 4; ++j) {
+    const double range = std::abs(j) == 2 ? kRange - 0.03 : kRange + 2.0;
+    pre.points.push_back(testing::BeamPoint(kCornerBeam + j, range));
+  }
+  auto view = [&](double corner_error_m, bool rule) {
+    EvidenceConfig config;
+    config.present_in_core = rule;
+    return GatherEvidence(T_lidar_shelf, model, {-1, -1, -1, -1}, pre, {}, testing::kWlrAlpha,
+                          false, config, corner_error_m)
+        .legs[0];
+  };
+  EXPECT_EQ(view(0.0, true), LegView::kSeenThrough);
+  EXPECT_EQ(view(0.012, true), LegView::kPresent);
+  EXPECT_EQ(view(0.0, false), LegView::kPresent);
+}
+
 TEST(ShelfEvidenceTest, WithoutAPresetAFourthCornerBehindSomethingElseVouchesForNothing) {
   // The scene above without a preset: nothing says a shelf stands there, and three posts with a
   // box in front of the fourth corner are what clutter makes. Not returned, and counted.
