@@ -98,6 +98,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("fit_chi2_four_legs", c.fit_chi2_four_legs);
   f.Read("build_sigma_m", c.build_sigma_m);
   f.Read("range_bias_sigma_m", c.range_bias_sigma_m);
+  f.Read("width_bloom_edge_share", c.width_bloom_edge_share);
   f.Read("interior_scale_points", c.interior_scale_points);
   f.Read("foreign_leg_points", c.foreign_leg_points);
   f.Read("foreign_legs_excused", c.foreign_legs_excused);

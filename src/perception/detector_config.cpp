@@ -94,6 +94,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           "in [0, 0.05] (a leg farther off its model's place is no longer that model's)");
   k.Check(e.range_bias_sigma_m >= 0.0 && e.range_bias_sigma_m <= 0.1, "evidence.range_bias_sigma_m",
           "in [0, 0.1] (metres; 0: off)");
+  k.Check(e.width_bloom_edge_share >= 0.0 && e.width_bloom_edge_share <= 1.0,
+          "evidence.width_bloom_edge_share", "in [0, 1] (0: off)");
   k.Check(e.interior_scale_points > 0.0, "evidence.interior_scale_points", "> 0");
   k.Check(e.foreign_leg_points >= 0.0, "evidence.foreign_leg_points", ">= 0");
   k.Check(e.foreign_legs_excused >= 0, "evidence.foreign_legs_excused", ">= 0 (0: off)");

@@ -164,6 +164,11 @@ struct EvidenceConfig {
                                           ///< shelf the preset vouches for; 0: off
   double range_bias_sigma_m = 0.01;       ///< [m] std of the scanner's systematic range error,
                                           ///< fitted per shelf for the confidence; 0: off
+  double width_bloom_edge_share = 0.5;    ///< [-] share of the bloom its legs were granted
+                                          ///< (width_bloom_rad) times range added to the
+                                          ///< across-beam std of a leg placed by one outline
+                                          ///< edge, for the confidence's chi-square of a shelf
+                                          ///< whose four corners the scan accounts for; 0: off
   double interior_scale_points = 4.0;     ///< [-] points inside the footprint that halve it
   double foreign_leg_points = 6.0;        ///< [-] a leg-sized cluster inside counts as this many
   double edge_band_m = 0.05;              ///< [m] a foreign leg this near an edge line of the
