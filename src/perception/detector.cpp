@@ -202,9 +202,9 @@ bool BeamsSpanAtLeast(const std::array<Eigen::Vector2d, 4>& legs, int count, dou
 // Legs at one bearing show a bias only as a shift, which the pose takes up; fitting it there too
 // (no spread limit) made one more phantom scene in the 100000 (25 -> 26), at 45 degrees a clutter
 // detection more among 12000 WLR-716 clutter scenes, at 60 degrees neither.
-// A blooming scanner draws every thin object wider by up to `bloom_rad` (the bloom granted to the
-// shelf's legs), half of it at each outline edge. A leg placed by one edge (the other cut by an
-// occluder, a dropout or the field of view: its fit's silhouette term holds that edge) sits off
+// A blooming scanner draws every thin object wider by up to the bloom granted to the shelf's legs
+// (ev.width_bloom_rad), half of it at each outline edge. A leg placed by one edge (the other cut by
+// an occluder, a dropout or the field of view: its fit's silhouette term holds that edge) sits off
 // across the beam by up to that half at its range, where the beam step alone allowed millimetres:
 // its across-beam std is widened by evidence.width_bloom_edge_share of bloom times range. Legs
 // peeking past a box, their free edge bloomed 1.2-2.9 cm, sank the confidence of the shelf behind
@@ -217,11 +217,13 @@ bool BeamsSpanAtLeast(const std::array<Eigen::Vector2d, 4>& legs, int count, dou
 double ConfidenceChiSquare(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
                            const geometry::ShelfModel& model, const ShelfFitResult& fit,
                            const ShelfRefineResult& refined,
-                           const std::array<LegFitResult, 4>& leg_fits, double bloom_rad,
+                           const std::array<LegFitResult, 4>& leg_fits, const ShelfEvidence& ev,
                            std::array<LegSigma, 4> sigma, const ScoreInputs& in) {
   const double build = in.config.evidence.build_sigma_m;
   const double bias = in.config.evidence.range_bias_sigma_m;
-  const double edge_bloom = in.config.evidence.width_bloom_edge_share * bloom_rad;
+  const bool corners_accounted = ev.legs_seen + ev.legs_occluded == 4;
+  const double edge_bloom =
+      corners_accounted ? in.config.evidence.width_bloom_edge_share * ev.width_bloom_rad : 0.0;
   if (build <= 0.0 && bias <= 0.0 && edge_bloom <= 0.0) return refined.chi2;
   for (int i = 0; i < set.count; ++i) {
     const bool one_edge = leg_fits[i].silhouette.edge_side != 0;
@@ -382,12 +384,11 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   ShelfEvidence ev = GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre,
                                     in.span_roles, in.angle_increment_rad, vouched, config.evidence,
                                     kCornerErrorShareOfRms * fit->rms_m);
-  // A shelf the map vouches for may stand off its drawing by its build tolerance
-  // (ConfidenceChiSquare); legs that only the scan vouches for must match the drawing.
-  const bool corners_accounted = ev.legs_seen + ev.legs_occluded == 4;
+  // A shelf the map vouches for may stand off its drawing by its build tolerance, and a leg placed
+  // by one bloomed edge by that bloom (ConfidenceChiSquare); legs that only the scan vouches for
+  // must match the drawing.
   const double confidence_chi2 =
-      vouched ? ConfidenceChiSquare(legs, set, model, *fit, refined_pose, h.leg_fits,
-                                    corners_accounted ? ev.width_bloom_rad : 0.0, sigma, in)
+      vouched ? ConfidenceChiSquare(legs, set, model, *fit, refined_pose, h.leg_fits, ev, sigma, in)
               : refined_pose.chi2;
   ev.confidence = ShelfConfidence(ev, confidence_chi2, set.count, config.evidence);
   h.corners_present =
