@@ -117,6 +117,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.width_bloom_order_share >= 0.0 && e.width_bloom_order_share <= 1.0,
           "evidence.width_bloom_order_share", "in [0, 1]");
   k.Check(e.width_bloom_min_objects >= 1, "evidence.width_bloom_min_objects", ">= 1");
+  k.Check(e.width_bloom_three_legs_beams >= 0.0, "evidence.width_bloom_three_legs_beams", ">= 0");
   k.Check(e.width_bloom_max_extent_m > 0.0, "evidence.width_bloom_max_extent_m", "> 0");
   k.Check(e.width_bloom_min_step_m > 0.0, "evidence.width_bloom_min_step_m", "> 0");
   k.Check(e.blend_max_returns >= 0, "evidence.blend_max_returns", ">= 0 (0: off)");

@@ -222,8 +222,12 @@ struct EvidenceConfig {
   double width_bloom_max_extent_m = 0.1;  ///< [m] a cluster this long at most is a thin object
   double width_bloom_min_step_m = 0.1;    ///< [m] ... clear of its background by this much
   /// Where the preset vouches for a shelf, also its own legs' common bloom (OwnLegsBloom in
-  /// shelf_evidence.cpp: their mean excess width with four seen, the least less a beam with three).
+  /// shelf_evidence.cpp: their mean excess width with four seen, the least less
+  /// width_bloom_three_legs_beams with three).
   bool width_bloom_own_legs = true;
+  double width_bloom_three_legs_beams = 0.5;  ///< [beams] with three legs, their own bloom is the
+                                              ///< least of their excess widths less this many
+                                              ///< beam spacings
   /// A leg of at most blend_max_returns returns whose beams either side returned from at most
   /// blend_max_step_m behind it may be a thinner leg blended with its background (MayBeBlend);
   /// a hypothesis on two or more such legs whose legs look narrower than its model's by more
