@@ -197,14 +197,15 @@ std::optional<PairedScene> ExpectFoundOnlyWith(const std::vector<geometry::Shelf
 // A scene by its class and seed.
 using SceneId = std::pair<sim::LayoutClass, std::uint64_t>;
 
-// ExpectFoundOnlyWith (the default detector against `off`) for each of `scenes` on the blooming
-// receiver, config/lidar_variants/bloom.yaml.
-void ExpectEachFoundOnlyWithOnBloom(const std::vector<SceneId>& scenes,
-                                    const perception::DetectorConfig& off) {
+// ExpectFoundOnlyWith (a detector with `on`, the default unless given, against one with `off`)
+// for each of `scenes`, drawn on `layout`, with the paper's models.
+void ExpectEachFoundOnlyWith(const std::vector<SceneId>& scenes,
+                             const perception::DetectorConfig& off, const sim::LayoutConfig& layout,
+                             const perception::DetectorConfig& on = {}) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   for (const auto& [layout_class, seed] : scenes) {
     SCOPED_TRACE(seed);
-    ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, VariantLayout("bloom"));
+    ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, layout, on);
   }
 }
 
@@ -1008,16 +1009,12 @@ TEST(LayoutSceneTest, BlendsAtALegsEdgeDoNotPushItOntoTheSurfaceBehind) {
 // confidence, the legs 2-3 cm too narrow on average); now each returns it first, with the rule
 // off (0) nothing.
 TEST(LayoutSceneTest, LegsSeenByABlendingReceiverMayLookNarrower) {
-  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const sim::LayoutConfig layout = VariantLayout("blend_any");
   perception::DetectorConfig off;
   off.evidence.leg_width_blend_beams = 0.0;
-  const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
-      {sim::LayoutClass::kOpen, 43}, {sim::LayoutClass::kRow, 123}, {sim::LayoutClass::kAisle, 27}};
-  for (const auto& [layout_class, seed] : scenes) {
-    SCOPED_TRACE(seed);
-    ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, layout);
-  }
+  ExpectEachFoundOnlyWith({{sim::LayoutClass::kOpen, 43},
+                           {sim::LayoutClass::kRow, 123},
+                           {sim::LayoutClass::kAisle, 27}},
+                          off, VariantLayout("blend_any"));
 }
 
 // A stray echo (dust, another robot's LiDAR: config/lidar_variants/stray_echoes.yaml) inside a
@@ -1029,18 +1026,12 @@ TEST(LayoutSceneTest, LegsSeenByABlendingReceiverMayLookNarrower) {
 // occluded_leg 88 and person_beside_leg 52 missed their target (below the minimum confidence); now
 // each returns it first, and nothing farther than 5 cm from a true shelf.
 TEST(LayoutSceneTest, AStrayEchoInsideAShelfIsNoForeignLeg) {
-  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
-  const sim::LayoutConfig layout = VariantLayout("stray_echoes");
   perception::DetectorConfig off;
   off.preprocess.lone_return_max_beams = 0.0;
-  const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
-      {sim::LayoutClass::kLargeClose, 20},
-      {sim::LayoutClass::kOccludedLeg, 88},
-      {sim::LayoutClass::kPersonBesideLeg, 52}};
-  for (const auto& [layout_class, seed] : scenes) {
-    SCOPED_TRACE(seed);
-    ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, layout);
-  }
+  ExpectEachFoundOnlyWith({{sim::LayoutClass::kLargeClose, 20},
+                           {sim::LayoutClass::kOccludedLeg, 88},
+                           {sim::LayoutClass::kPersonBesideLeg, 52}},
+                          off, VariantLayout("stray_echoes"));
 }
 
 // A real shelf stands a few millimetres off its drawing (a welded frame, a bent leg). Near the
@@ -1052,21 +1043,16 @@ TEST(LayoutSceneTest, AStrayEchoInsideAShelfIsNoForeignLeg) {
 // default stays 0 (docs/detector_history.md: with 3 mm, 5 more phantom scenes in 100000
 // as-designed ones).
 TEST(LayoutSceneTest, AShelfBuiltOffItsDrawingKeepsItsConfidence) {
-  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   sim::LayoutConfig layout = LayoutWithPresets();
   layout.leg_build_error_m = 0.01;
   layout.leg_build_twist_rad = 0.05;
   perception::DetectorConfig on;
   on.evidence.build_sigma_m = 0.004;
   const perception::DetectorConfig off;  // the default: legs held to the drawing
-  const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
-      {sim::LayoutClass::kLargeClose, 135},
-      {sim::LayoutClass::kOccludedLeg, 15},
-      {sim::LayoutClass::kPersonBesideLeg, 113}};
-  for (const auto& [layout_class, seed] : scenes) {
-    SCOPED_TRACE(seed);
-    ExpectFoundOnlyWith(models, OneScene(layout_class, seed), off, layout, on);
-  }
+  ExpectEachFoundOnlyWith({{sim::LayoutClass::kLargeClose, 135},
+                           {sim::LayoutClass::kOccludedLeg, 15},
+                           {sim::LayoutClass::kPersonBesideLeg, 113}},
+                          off, layout, on);
 }
 
 // A scanner reading every range 2 cm long (config/lidar_variants/range_bias.yaml). A large shelf
@@ -1104,11 +1090,11 @@ TEST(LayoutSceneTest, AScannerReadingLongStillFindsTheShelfAroundIt) {
 TEST(LayoutSceneTest, ALegPlacedByItsBloomedEdgeKeepsItsShelfsConfidence) {
   perception::DetectorConfig off;
   off.evidence.width_bloom_edge_share = 0.0;
-  ExpectEachFoundOnlyWithOnBloom({{sim::LayoutClass::kOccludedLeg, 5054},
-                                  {sim::LayoutClass::kPersonBesideLeg, 5484},
-                                  {sim::LayoutClass::kPersonBesideLeg, 5780},
-                                  {sim::LayoutClass::kAgainstWall, 5876}},
-                                 off);
+  ExpectEachFoundOnlyWith({{sim::LayoutClass::kOccludedLeg, 5054},
+                           {sim::LayoutClass::kPersonBesideLeg, 5484},
+                           {sim::LayoutClass::kPersonBesideLeg, 5780},
+                           {sim::LayoutClass::kAgainstWall, 5876}},
+                          off, VariantLayout("bloom"));
 }
 
 // With three legs, a shelf's own bloom is the least of their excess widths less
@@ -1121,12 +1107,12 @@ TEST(LayoutSceneTest, ALegPlacedByItsBloomedEdgeKeepsItsShelfsConfidence) {
 TEST(LayoutSceneTest, ThreeLegsShowTheirOwnBloomLessHalfABeam) {
   perception::DetectorConfig off;
   off.evidence.width_bloom_three_legs_beams = 1.0;
-  ExpectEachFoundOnlyWithOnBloom({{sim::LayoutClass::kAisle, 5076},
-                                  {sim::LayoutClass::kOccludedLeg, 5422},
-                                  {sim::LayoutClass::kOccludedLeg, 5732},
-                                  {sim::LayoutClass::kPersonBesideLeg, 5901},
-                                  {sim::LayoutClass::kAgainstWall, 5344}},
-                                 off);
+  ExpectEachFoundOnlyWith({{sim::LayoutClass::kAisle, 5076},
+                           {sim::LayoutClass::kOccludedLeg, 5422},
+                           {sim::LayoutClass::kOccludedLeg, 5732},
+                           {sim::LayoutClass::kPersonBesideLeg, 5901},
+                           {sim::LayoutClass::kAgainstWall, 5344}},
+                          off, VariantLayout("bloom"));
 }
 
 }  // namespace
