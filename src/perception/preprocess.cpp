@@ -18,25 +18,34 @@ std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan) {
   // The cos and sin of each beam's bearing come from the previous beam's, turned by the angle
   // increment (one complex multiplication instead of a sincos per beam, which was a quarter of a
   // detection's time on a room's scan), taken exactly every kAnchorBeams beams so that rounding
-  // cannot build up (it stays below 1e-14 of the range).
+  // cannot build up (it stays below 1e-14 of the range). Each block's bearings are turned in a
+  // loop of their own: with the points made in the same loop, the sincos call at each anchor
+  // kept the running cos and sin in memory, and each beam waited for the previous one's store.
   constexpr std::size_t kAnchorBeams = 32;
   const double cos_step = std::cos(scan.angle_increment);
   const double sin_step = std::sin(scan.angle_increment);
-  double c = 1.0;
-  double s = 0.0;
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    const double a = scan.BeamAngle(i);
-    if (i % kAnchorBeams == 0) {
-      c = std::cos(a);
-      s = std::sin(a);
-    } else {
+  std::array<double, kAnchorBeams> cos_beam{};
+  std::array<double, kAnchorBeams> sin_beam{};
+  for (std::size_t anchor = 0; anchor < scan.ranges.size(); anchor += kAnchorBeams) {
+    const std::size_t count = std::min(kAnchorBeams, scan.ranges.size() - anchor);
+    double c = std::cos(scan.BeamAngle(anchor));
+    double s = std::sin(scan.BeamAngle(anchor));
+    cos_beam[0] = c;
+    sin_beam[0] = s;
+    for (std::size_t k = 1; k < count; ++k) {
       const double c_prev = c;
       c = c_prev * cos_step - s * sin_step;
       s = s * cos_step + c_prev * sin_step;
+      cos_beam[k] = c;
+      sin_beam[k] = s;
     }
-    if (!scan.HasReturn(i)) continue;
-    const double r = scan.ranges[i];
-    out.push_back({Eigen::Vector2d(r * c, r * s), r, a, static_cast<int>(i)});
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = anchor + k;
+      if (!scan.HasReturn(i)) continue;
+      const double r = scan.ranges[i];
+      out.push_back({Eigen::Vector2d(r * cos_beam[k], r * sin_beam[k]), r, scan.BeamAngle(i),
+                     static_cast<int>(i)});
+    }
   }
   return out;
 }

@@ -40,10 +40,16 @@ class Surroundings {
         linked_(hi - lo, 0),
         range_sum_(hi - lo + 1, 0.0),
         beam_sum_(hi - lo + 1, 0.0) {
+    // The running sums stay in registers: read back from the arrays, each point waited for the
+    // previous store (a tenth of the surface test's time on a room's scan).
+    double range_sum = 0.0;
+    double beam_sum = 0.0;
     for (std::size_t i = lo; i < hi; ++i) {
       linked_[i - lo] = i > 0 && Neighbours(points[i - 1], points[i], limits);
-      range_sum_[i - lo + 1] = range_sum_[i - lo] + points[i].range;
-      beam_sum_[i - lo + 1] = beam_sum_[i - lo] + points[i].beam;
+      range_sum += points[i].range;
+      beam_sum += points[i].beam;
+      range_sum_[i - lo + 1] = range_sum;
+      beam_sum_[i - lo + 1] = beam_sum;
     }
   }
   const std::vector<ScanPoint>& points() const { return points_; }
