@@ -10,12 +10,14 @@ scores the result against the truth.
 Usage
 -----
     PYTHONPATH=build/python /usr/bin/python3 scripts/independent_scenes.py \
-        --scenes-per-class 200 --seed 1 [--jobs 2] [--json FILE] [--dump DIR] [--classes a,b]
-        [--list-failures] [--echo first|strongest] [--spot-scale F]
+        --scenes-per-class 200 --seed 1 [--jobs 2] [--json FILE] [--dump DIR [--dump-all]]
+        [--classes a,b] [--list-failures] [--echo first|strongest] [--spot-scale F]
 
 --dump DIR writes each failing scene as DIR/<class>_<seed>_<index>.scan.json (a LaserScan that
 `shelfdock detect --scan` reads) and .truth.json (shelves, preset, class, seed, sensor draws,
-noise, outcome and the `shelfdock detect ... --explain` command that re-runs it).  --echo and
+noise, outcome and the `shelfdock detect ... --explain` command that re-runs it); with --dump-all
+every scene, right or not (what a bound over all scenes, such as scripts/model_choice_bound.py's,
+needs once converted to its truth format).  --echo and
 --spot-scale are sensitivity knobs of the sensor model (below); the defaults are the model.
 
 The module is importable (tests/python/test_independent_scenes.py loads it by path):
@@ -1185,11 +1187,12 @@ _DET = None
 _OPTS = {}
 
 
-def _init(models, params, dump, model_opts):
+def _init(models, params, dump, model_opts, dump_all=False):
     global _DET
     import shelfdock
     _DET = shelfdock.Detector(models=models, params=params)
     _OPTS["dump"] = dump
+    _OPTS["dump_all"] = dump_all
     _OPTS["model"] = model_opts
 
 
@@ -1197,21 +1200,21 @@ def _work(task):
     cls, seed, idx = task
     sc = generate_scene(cls, seed, idx, **_OPTS.get("model", {}))
     rec = evaluate_scene(_DET, sc)
-    if _OPTS.get("dump") and is_failure(rec):
+    if _OPTS.get("dump") and (_OPTS.get("dump_all") or is_failure(rec)):
         dump_scene(sc, rec, _OPTS["dump"])
     return rec
 
 
 def run(models, seed, per_class, classes=CLASSES, params=None, jobs=1, dump=None,
-        spot_scale=1.0, echo="first"):
+        spot_scale=1.0, echo="first", dump_all=False):
     """All scenes of a sweep; returns the list of per-scene records."""
     tasks = [(c, seed, i) for c in classes for i in range(per_class)]
     mo = dict(spot_scale=spot_scale, echo=echo)
     if jobs <= 1:
-        _init(models, params, dump, mo)
+        _init(models, params, dump, mo, dump_all)
         return [_work(t) for t in tasks]
     import multiprocessing as mp
-    with mp.get_context("fork").Pool(jobs, _init, (models, params, dump, mo)) as pool:
+    with mp.get_context("fork").Pool(jobs, _init, (models, params, dump, mo, dump_all)) as pool:
         return pool.map(_work, tasks, chunksize=8)
 
 
@@ -1296,6 +1299,7 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=min(2, os.cpu_count() or 1))
     ap.add_argument("--json", default=None, help="write the tables and failing scenes here")
     ap.add_argument("--dump", default=None, help="write failing scenes (scan + truth JSON) here")
+    ap.add_argument("--dump-all", action="store_true", help="with --dump: every scene, not only the failing ones")
     ap.add_argument("--list-failures", action="store_true", help="print one line per failure")
     ap.add_argument("--spot-scale", type=float, default=1.0,
                     help="sensitivity: scale every beam's spot (divergence, smear, aperture)")
@@ -1308,7 +1312,7 @@ def main(argv=None):
             ap.error(f"unknown class {c}; one of {', '.join(CLASSES)}")
     t0 = time.time()
     recs = run(os.path.abspath(a.models), a.seed, a.scenes_per_class, classes, a.params, a.jobs,
-               a.dump, a.spot_scale, a.echo)
+               a.dump, a.spot_scale, a.echo, a.dump_all)
     wall = time.time() - t0
     rows = summarise(recs, classes)
     print(f"independent scenes: seed {a.seed}, {a.scenes_per_class} per class, "

@@ -11,6 +11,7 @@ The module is located as conftest.py does (SHELFDOCK_PYTHON_DIR, else build/pyth
 generator is loaded by path from the source tree.
 """
 import importlib.util
+import json
 import math
 
 import numpy as np
@@ -115,3 +116,18 @@ def test_the_scans_bloom_read_finds_what_strict_widths_miss(gen, records, models
     lost = [(a["cls"], a["index"]) for a, b in zip(records, without)
             if b["outcome"] == "right" and a["outcome"] != "right"]
     assert len(lost) <= 1, lost
+
+
+def test_dump_all_writes_every_scene_with_its_outcome(gen, models, tmp_path):
+    """--dump-all writes every scene, not only the failing ones, each truth file with the outcome
+    the sweep recorded for it (2 scenes of two classes)."""
+    pytest.importorskip("shelfdock")
+    recs = gen.run(str(models), SEED, 2, classes=["open", "clutter"], jobs=1, dump=str(tmp_path),
+                   dump_all=True)
+    truths = sorted(tmp_path.glob("*.truth.json"))
+    assert len(truths) == len(recs) == 4
+    by_name = {f"{r['cls']}_{r['seed']}_{r['index']:04d}": r["outcome"] for r in recs}
+    for t in truths:
+        name = t.name[: -len(".truth.json")]
+        assert (tmp_path / f"{name}.scan.json").exists()
+        assert json.loads(t.read_text())["outcome"] == by_name[name]
