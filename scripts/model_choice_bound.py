@@ -11,7 +11,12 @@ fitted away: d^2 = delta^T S delta, delta the size difference (dL, dW) and S the
 of the size block in the Fisher information of (x, y, yaw, L, W).
 
 Reads the scenes `shelfdock eval-layouts --dump-failures DIR --dump-all` wrote (each scan with its
-truth). For every scene whose target has such a twin and whose first detection stands at the
+truth), or those `scripts/independent_scenes.py --dump DIR --dump-all` wrote (grouped by noise and
+sensor only: its truth does not say how many legs a detection used). On the independent
+generator the detector confuses fewer scenes than this floor expects (seeds 1 / 1001 / 2001, 200
+per class: 25 / 41 / 32 against 41.9 / 49.0 / 45.9): its scans carry more than the floor's
+assumptions grant (the stated noise, an outline edge known to a beam spacing / sqrt(12)), so
+there the floor says only that its confusions are near what its scans hold. For every scene whose target has such a twin and whose first detection stands at the
 target (centre within 50 mm, either model), the information comes from the returns that hit the
 target's legs as they truly stand and from each hit leg's two outline edges as bearings, one beam
 spacing / sqrt(12) each, as scripts/pose_bound.py builds it (the same optimism: every outline
@@ -116,6 +121,22 @@ def phi(x):
     return 0.5 * math.erfc(-x / math.sqrt(2.0))
 
 
+def as_layout_truth(truth):
+    """A scene's truth in `shelfdock eval-layouts --dump-failures` terms: that file as it is, or
+    one scripts/independent_scenes.py --dump --dump-all wrote (its target an index into its
+    shelves, its outcome "right" / "wrong_model", no count of the legs a detection used)."""
+    if "cls" not in truth or "shelves" not in truth:
+        return truth
+    target = truth.get("target")
+    if target is None or not truth.get("findable") or not truth.get("detections"):
+        return {}
+    shelf, first = truth["shelves"][target], truth["detections"][0]
+    return dict(target=dict(model=shelf["model"], x=shelf["x"], y=shelf["y"], yaw=shelf["yaw"]),
+                first=dict(model=first["model"], x=first["x"], y=first["y"], legs_used=None),
+                outcome={"right": "right-first", "wrong_model": "wrong-first"}.get(truth["outcome"]),
+                noise_sigma_m=truth["noise"], lidar=truth["sensor"]["name"])
+
+
 def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1.0 / math.sqrt(12.0),
           seen_edges=True):
     """Per group ("all", "<legs> legs, <noise> mm", each lidar): scenes, the floor's expected count
@@ -135,7 +156,7 @@ def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1
     groups = defaultdict(lambda: {"scenes": 0, "expected": 0.0, "wrong": 0})
     skipped = 0
     for path in sorted(glob.glob(os.path.join(dump_dir, "*.truth.json"))):
-        truth = json.load(open(path))
+        truth = as_layout_truth(json.load(open(path)))
         target, first = truth.get("target"), truth.get("first")
         if not target or not first or truth.get("outcome") not in ("right-first", "wrong-first"):
             continue
@@ -158,7 +179,8 @@ def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1
         delta = np.array([other["length"] - model["length"], other["width"] - model["width"]])
         d = math.sqrt(max(0.0, float(delta @ schur @ delta)))
         prob = phi(-0.5 * d)
-        band = f"{first['legs_used']} legs, {truth['noise_sigma_m'] * 1000:.0f} mm"
+        legs = f"{first['legs_used']} legs, " if first.get("legs_used") is not None else ""
+        band = f"{legs}{truth['noise_sigma_m'] * 1000:.0f} mm"
         for key in ("all", band, truth["lidar"]):
             g = groups[key]
             g["scenes"] += 1

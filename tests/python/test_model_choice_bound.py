@@ -49,3 +49,35 @@ def test_close_model_confusions_against_their_floor(cli, source_dir, models, tmp
     by_sensor = sum(g["scenes"] for k, g in with_edges.items() if "legs" not in k and k != "all")
     assert by_sensor == floor["scenes"]
     assert math.isfinite(floor["expected"])
+
+
+def test_reads_the_independent_generators_scenes(source_dir, models, tmp_path):
+    """The bound reads scenes scripts/independent_scenes.py --dump --dump-all wrote (open and row,
+    15 each, seed 1): every scene whose target has a twin and whose first detection stands at it
+    counts, grouped by noise and sensor; a scene not found or not findable counts nowhere."""
+    import json
+    import pytest
+    pytest.importorskip("shelfdock")
+    spec = importlib.util.spec_from_file_location(
+        "independent_scenes", source_dir / "scripts" / "independent_scenes.py")
+    gen = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(gen)
+    recs = gen.run(str(models), 1, 15, classes=["open", "row"], jobs=1, dump=str(tmp_path),
+                   dump_all=True)
+    script = load_script(source_dir)
+    sizes = {m["name"]: m for m in yaml.safe_load(open(models))["models"]}
+    groups, skipped = script.bound(str(tmp_path), sizes)
+    twins = {"t1-rect-1075x883", "t1-rect-1080x856"}
+    counted = 0
+    for t in tmp_path.glob("*.truth.json"):
+        truth = json.loads(t.read_text())
+        if truth["findable"] and truth["outcome"] in ("right", "wrong_model") and \
+                truth["shelves"][truth["target"]]["model"] in twins:
+            counted += 1
+    assert len(recs) == 30
+    assert counted > 0
+    assert groups["all"]["scenes"] + skipped == counted, (groups["all"], skipped, counted)
+    assert 0.0 < groups["all"]["expected"] < groups["all"]["scenes"]
+    assert all("legs" not in k for k in groups)
+    by_noise = sum(g["scenes"] for k, g in groups.items() if k.endswith(" mm"))
+    assert by_noise == groups["all"]["scenes"]
