@@ -28,8 +28,9 @@ std::vector<ScanPoint> ScanToPoints(const geometry::LaserScan& scan) {
   std::array<double, kAnchorBeams> sin_beam{};
   for (std::size_t anchor = 0; anchor < scan.ranges.size(); anchor += kAnchorBeams) {
     const std::size_t count = std::min(kAnchorBeams, scan.ranges.size() - anchor);
-    double c = std::cos(scan.BeamAngle(anchor));
-    double s = std::sin(scan.BeamAngle(anchor));
+    const double anchor_angle = scan.BeamAngle(anchor);
+    double c = std::cos(anchor_angle);
+    double s = std::sin(anchor_angle);
     cos_beam[0] = c;
     sin_beam[0] = s;
     for (std::size_t k = 1; k < count; ++k) {

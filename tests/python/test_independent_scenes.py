@@ -10,7 +10,6 @@ scenes are physically possible and its sensor model returns what its docstring s
 The module is located as conftest.py does (SHELFDOCK_PYTHON_DIR, else build/python); the
 generator is loaded by path from the source tree.
 """
-import importlib.util
 import json
 import math
 
@@ -22,12 +21,8 @@ PER_CLASS = 30
 
 
 @pytest.fixture(scope="module")
-def gen(source_dir):
-    path = source_dir / "scripts" / "independent_scenes.py"
-    spec = importlib.util.spec_from_file_location("independent_scenes", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+def gen(load_script):
+    return load_script("independent_scenes")
 
 
 @pytest.fixture(scope="module")

@@ -7,17 +7,9 @@ of returns (two or more) with at least 30 legs, the along-beam std lies within 0
 sigma / sqrt(returns) (measured 0.87-1.10) and its mean within a third of it; an edge between two
 fitted legs is off by under 15 mm std (9.7-9.9 mm on the 7000 scenes of docs/detector_history.md).
 """
-import importlib.util
 import subprocess
 
 import shelfdock
-
-
-def load_script(source_dir):
-    spec = importlib.util.spec_from_file_location("leg_errors", source_dir / "scripts" / "leg_errors.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def dump_scenes(cli, source_dir, models, tmp_path):
@@ -30,9 +22,9 @@ def dump_scenes(cli, source_dir, models, tmp_path):
     return dump
 
 
-def test_fitted_legs_are_at_the_noise_bound(cli, source_dir, models, tmp_path):
+def test_fitted_legs_are_at_the_noise_bound(cli, source_dir, models, tmp_path, load_script):
     dump = dump_scenes(cli, source_dir, models, tmp_path)
-    leg_errors = load_script(source_dir)
+    leg_errors = load_script("leg_errors")
     legs, edges = leg_errors.measure(str(dump), shelfdock.Detector(str(models)),
                                      leg_errors.read_model_sizes(models), 0.06)
     assert len(legs) > 500, f"only {len(legs)} legs matched"
@@ -48,14 +40,14 @@ def test_fitted_legs_are_at_the_noise_bound(cli, source_dir, models, tmp_path):
         assert e["std_m"] < 0.015, e
 
 
-def test_close_models_are_told_apart_near_an_ideal_decision(cli, source_dir, models, tmp_path):
+def test_close_models_are_told_apart_near_an_ideal_decision(cli, source_dir, models, tmp_path, load_script):
     """The detector's 1075x883 / 1080x856 confusions against what an ideal decision on the same
     legs, with their measured errors, would make (Phi(-d/2) summed over the scenes). 300 WLR-716
     scenes of open / row / aisle at seed0 5001: a detector choosing at random between the two
     would confuse about half of the scenes at the target's place; it must stay within twice the
     ideal's count plus 3."""
     dump = dump_scenes(cli, source_dir, models, tmp_path)
-    leg_errors = load_script(source_dir)
+    leg_errors = load_script("leg_errors")
     detector = shelfdock.Detector(str(models))
     sizes = leg_errors.read_model_sizes(models)
     legs, edges = leg_errors.measure(str(dump), detector, sizes, 0.06)

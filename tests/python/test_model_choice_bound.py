@@ -9,29 +9,20 @@ more than the edges shown (measurements only add information), and
 the detector's confusions stay within three times the floor's expected count plus 3 (measured at
 seed0 5001, 10000 scenes: 92 against 49.9; seeds 1: 34 against 17.9).
 """
-import importlib.util
+import json
 import math
 import subprocess
-import sys
 
+import pytest
 import yaml
 
 
-def load_script(source_dir):
-    sys.path.insert(0, str(source_dir / "scripts"))
-    spec = importlib.util.spec_from_file_location(
-        "model_choice_bound", source_dir / "scripts" / "model_choice_bound.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def test_close_model_confusions_against_their_floor(cli, source_dir, models, tmp_path):
+def test_close_model_confusions_against_their_floor(cli, models, tmp_path, load_script):
     dump = tmp_path / "scenes"
     subprocess.run([cli, "eval-layouts", "--class", "open", "row", "aisle", "--scenes-per-class",
                     "100", "--seed0", "5001", "--models", str(models), "--dump-failures", str(dump),
                     "--dump-all"], check=True, capture_output=True)
-    script = load_script(source_dir)
+    script = load_script("model_choice_bound")
     sizes = {m["name"]: m for m in yaml.safe_load(open(models))["models"]}
     with_edges, _ = script.bound(str(dump), sizes)
     every_edge, _ = script.bound(str(dump), sizes, seen_edges=False)
@@ -51,20 +42,15 @@ def test_close_model_confusions_against_their_floor(cli, source_dir, models, tmp
     assert math.isfinite(floor["expected"])
 
 
-def test_reads_the_independent_generators_scenes(source_dir, models, tmp_path):
+def test_reads_the_independent_generators_scenes(models, tmp_path, load_script):
     """The bound reads scenes scripts/independent_scenes.py --dump --dump-all wrote (open and row,
     15 each, seed 1): every scene whose target has a twin and whose first detection stands at it
     counts, grouped by noise and sensor; a scene not found or not findable counts nowhere."""
-    import json
-    import pytest
     pytest.importorskip("shelfdock")
-    spec = importlib.util.spec_from_file_location(
-        "independent_scenes", source_dir / "scripts" / "independent_scenes.py")
-    gen = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(gen)
+    gen = load_script("independent_scenes")
     recs = gen.run(str(models), 1, 15, classes=["open", "row"], jobs=1, dump=str(tmp_path),
                    dump_all=True)
-    script = load_script(source_dir)
+    script = load_script("model_choice_bound")
     sizes = {m["name"]: m for m in yaml.safe_load(open(models))["models"]}
     groups, skipped = script.bound(str(tmp_path), sizes)
     twins = {"t1-rect-1075x883", "t1-rect-1080x856"}
