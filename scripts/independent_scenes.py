@@ -1299,7 +1299,8 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=min(2, os.cpu_count() or 1))
     ap.add_argument("--json", default=None, help="write the tables and failing scenes here")
     ap.add_argument("--dump", default=None, help="write failing scenes (scan + truth JSON) here")
-    ap.add_argument("--dump-all", action="store_true", help="with --dump: every scene, not only the failing ones")
+    ap.add_argument("--dump-all", action="store_true",
+                    help="with --dump: every scene, not only the failing ones")
     ap.add_argument("--list-failures", action="store_true", help="print one line per failure")
     ap.add_argument("--spot-scale", type=float, default=1.0,
                     help="sensitivity: scale every beam's spot (divergence, smear, aperture)")

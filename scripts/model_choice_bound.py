@@ -16,9 +16,10 @@ sensor only: its truth does not say how many legs a detection used). On the inde
 generator the detector confuses fewer scenes than this floor expects (seeds 1 / 1001 / 2001, 200
 per class: 25 / 41 / 32 against 41.9 / 49.0 / 45.9): its scans carry more than the floor's
 assumptions grant (the stated noise, an outline edge known to a beam spacing / sqrt(12)), so
-there the floor says only that its confusions are near what its scans hold. For every scene whose target has such a twin and whose first detection stands at the
-target (centre within 50 mm, either model), the information comes from the returns that hit the
-target's legs as they truly stand and from each hit leg's two outline edges as bearings, one beam
+there the floor says only that its confusions are near what its scans hold. For every scene
+whose target has such a twin and whose first detection stands at the target (centre within 50
+mm, either model), the information comes from the returns that hit the target's legs as they
+truly stand and from each hit leg's two outline edges as bearings, one beam
 spacing / sqrt(12) each, as scripts/pose_bound.py builds it (the same optimism: every outline
 edge counted, leg positions exact). The expected number of wrong models, the sum of the scenes'
 probabilities, is a floor for any detector on these scans; beside it, how many the detector got
@@ -131,10 +132,10 @@ def as_layout_truth(truth):
     if target is None or not truth.get("findable") or not truth.get("detections"):
         return {}
     shelf, first = truth["shelves"][target], truth["detections"][0]
+    outcome = {"right": "right-first", "wrong_model": "wrong-first"}.get(truth["outcome"])
     return dict(target=dict(model=shelf["model"], x=shelf["x"], y=shelf["y"], yaw=shelf["yaw"]),
                 first=dict(model=first["model"], x=first["x"], y=first["y"], legs_used=None),
-                outcome={"right": "right-first", "wrong_model": "wrong-first"}.get(truth["outcome"]),
-                noise_sigma_m=truth["noise"], lidar=truth["sensor"]["name"])
+                outcome=outcome, noise_sigma_m=truth["noise"], lidar=truth["sensor"]["name"])
 
 
 def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1.0 / math.sqrt(12.0),

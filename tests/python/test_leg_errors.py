@@ -40,7 +40,8 @@ def test_fitted_legs_are_at_the_noise_bound(cli, source_dir, models, tmp_path, l
         assert e["std_m"] < 0.015, e
 
 
-def test_close_models_are_told_apart_near_an_ideal_decision(cli, source_dir, models, tmp_path, load_script):
+def test_close_models_are_told_apart_near_an_ideal_decision(cli, source_dir, models, tmp_path,
+                                                            load_script):
     """The detector's 1075x883 / 1080x856 confusions against what an ideal decision on the same
     legs, with their measured errors, would make (Phi(-d/2) summed over the scenes). 300 WLR-716
     scenes of open / row / aisle at seed0 5001: a detector choosing at random between the two
