@@ -176,6 +176,9 @@ struct EvidenceConfig {
                                           ///< edge and counts as inside; 0: off
   double edge_corner_clearance_m = 0.2;   ///< [m] ... when at least this far from every corner
   double edge_partner_m = 0.4;            ///< [m] ... and no other object stands this near it
+  double hider_partner_m = 0.4;           ///< [m] a leg-sized cluster inside this near what
+                                          ///< hides one of the shelf's legs is the hider's other
+                                          ///< part (a person's other leg): an object; 0: off
   int foreign_legs_excused = 1;           ///< [-] legs of other sets inside that do not count
                                           ///< when four legs measured by their own returns and
                                           ///< the map vouch for the shelf (a person under its

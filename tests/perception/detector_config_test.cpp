@@ -226,6 +226,8 @@ const RuleCase kCases[] = {
     {"edge_clearance", "evidence.edge_corner_clearance_m",
      [](auto& c) { c.evidence.edge_corner_clearance_m = -0.1; }},
     {"edge_partner", "evidence.edge_partner_m", [](auto& c) { c.evidence.edge_partner_m = -0.1; }},
+    {"hider_partner", "evidence.hider_partner_m",
+     [](auto& c) { c.evidence.hider_partner_m = -0.1; }},
     {"map_error", "preset_gate.map_error_m", [](auto& c) { c.preset_gate.map_error_m = 0.0; }},
     {"map_error_yaw", "preset_gate.map_error_yaw_rad",
      [](auto& c) { c.preset_gate.map_error_yaw_rad = 0.0; }},

@@ -585,6 +585,24 @@ TEST(ShelfEvidenceTest, PersonInsideTheFootprintIsNotAForeignLeg) {
   }
 }
 
+// Adds `count` exact returns at `centre`'s range on the beams around its bearing (kWlrAlpha
+// steps) as span `pre.spans.size()`; spans must be added in beam order.
+void AddSpan(PreprocessOutput& pre, const Eigen::Vector2d& centre, int count) {
+  ClusterSpan span;
+  span.begin = pre.points.size();
+  const double alpha = testing::kWlrAlpha;
+  const int middle = static_cast<int>(std::lround(std::atan2(centre.y(), centre.x()) / alpha));
+  for (int k = 0; k < count; ++k) {
+    pre.points.push_back(testing::BeamPoint(middle - count / 2 + k, centre.norm()));
+  }
+  span.end = pre.points.size();
+  for (std::size_t i = span.begin; i < span.end; ++i) {
+    span.centroid += pre.points[i].p / static_cast<double>(count);
+  }
+  span.extent_m = (pre.points[span.end - 1].p - pre.points[span.begin].p).norm();
+  pre.spans.push_back(span);
+}
+
 // A leg-sized sliver inside the footprint of a 1075x883 shelf 2 m ahead (three returns, 3 cm
 // across, 0.2 m in from a front leg) that some leg set of the search uses, next in the scan to a
 // cluster in front of it: the shelf's own front leg, or a post that is no leg of the shelf. Whole,
@@ -595,27 +613,12 @@ TEST(ShelfEvidenceTest, ASliverItsOwnLegPartlyHidesInsideAVouchedShelfIsNoForeig
   const geometry::ShelfModel model = PaperModels()[1];
   const geometry::Pose2 T_lidar_shelf(2.0 + 0.5 * model.length_m, 0.0, 0.0);
   const double alpha = testing::kWlrAlpha;
-  // Returns at `centre`'s range on `count` beams around its bearing, as span `pre.spans.size()`.
-  auto add_span = [&](PreprocessOutput& pre, const Eigen::Vector2d& centre, int count) {
-    ClusterSpan span;
-    span.begin = pre.points.size();
-    const int middle = static_cast<int>(std::lround(std::atan2(centre.y(), centre.x()) / alpha));
-    for (int k = 0; k < count; ++k) {
-      pre.points.push_back(testing::BeamPoint(middle - count / 2 + k, centre.norm()));
-    }
-    span.end = pre.points.size();
-    for (std::size_t i = span.begin; i < span.end; ++i) {
-      span.centroid += pre.points[i].p / static_cast<double>(count);
-    }
-    span.extent_m = (pre.points[span.end - 1].p - pre.points[span.begin].p).norm();
-    pre.spans.push_back(span);
-  };
   // Span 0 the sliver, span 1 the cluster beside it in front: the front leg at corner 3
   // (LegCentres: -length / 2, +width / 2), its near face 2 cm in front of its centre.
   PreprocessOutput pre;
-  add_span(pre, T_lidar_shelf * Eigen::Vector2d(-0.5 * model.length_m + 0.2, 0.2), 3);
+  AddSpan(pre, T_lidar_shelf * Eigen::Vector2d(-0.5 * model.length_m + 0.2, 0.2), 3);
   const Eigen::Vector2d front = T_lidar_shelf * model.LegCentres()[3];
-  add_span(pre, front - 0.02 * front.normalized(), 4);
+  AddSpan(pre, front - 0.02 * front.normalized(), 4);
   ASSERT_LT(pre.points[2].beam, pre.points[3].beam);  // beam order
   Cluster leg;
   leg.points.assign(pre.points.begin() + 3, pre.points.end());
@@ -732,6 +735,72 @@ TEST(ShelfEvidenceTest, ALegOfFewReturnsCloseInFrontOfItsBackgroundMayBeABlend) 
   EvidenceConfig off;
   off.blend_max_returns = 0;
   EXPECT_FALSE(MayBeBlend(leg(1, 0.2, 0.25), off));
+}
+
+// A 1075x883 shelf 2.5 m ahead (hand-made returns, as above) whose back-left leg something under
+// it hides: one object 0.3 m in front of the leg on its line of sight (excused: it explains the
+// hidden leg) and, 0.2 m beside it and inside the footprint, a leg-sized cluster that some leg set
+// of the search uses. That cluster is the hider's other part (a person's other leg, a trolley's
+// other upright): an object, not a foreign leg, the phantom's signature (evidence.hider_partner_m).
+// With the rule off it counts as a foreign leg; so too when something else stands inside as well
+// (a crowded spot: posts in clutter around a corner of three, not a person).
+TEST(ShelfEvidenceTest, TheOtherPartOfWhatHidesALegIsAnObject) {
+  const geometry::ShelfModel model = PaperModels()[1];
+  const geometry::Pose2 T_lidar_shelf(2.5 + 0.5 * model.length_m, 0.0, 0.0);
+  const auto corners =
+      model.LegCentres();  // 0 front right, 1 back right, 2 back left, 3 front left
+  const Eigen::Vector2d hidden = T_lidar_shelf * corners[2];
+  const Eigen::Vector2d hider = hidden - 0.3 * hidden.normalized();
+  const Eigen::Vector2d partner = hider - Eigen::Vector2d(0.0, 0.2);
+  const Eigen::Vector2d other = T_lidar_shelf * Eigen::Vector2d(0.0, -0.1);
+  auto evidence = [&](double hider_partner_m, bool crowded) {
+    PreprocessOutput pre;
+    std::vector<SpanRole> roles;
+    std::array<int, 4> corner_candidate{-1, -1, -1, -1};
+    auto add = [&](const Eigen::Vector2d& centre, SpanRole role, int corner) {
+      AddSpan(pre, centre, 3);
+      roles.push_back(role);
+      if (corner < 0) return;
+      Cluster leg;
+      leg.points.assign(pre.points.end() - 3, pre.points.end());
+      leg.centroid = pre.spans.back().centroid;
+      leg.span = static_cast<int>(pre.spans.size()) - 1;
+      corner_candidate[static_cast<std::size_t>(corner)] = static_cast<int>(pre.candidates.size());
+      pre.candidates.push_back(leg);
+    };
+    // In beam order: front right, back right, (the other object), the partner, the hider, front
+    // left. The own legs' near faces 2 cm in front of their centres.
+    auto face = [&](int k) {
+      const Eigen::Vector2d c = T_lidar_shelf * corners[static_cast<std::size_t>(k)];
+      return Eigen::Vector2d(c - 0.02 * c.normalized());
+    };
+    add(face(0), SpanRole::kLeg, 0);
+    add(face(1), SpanRole::kLeg, 1);
+    if (crowded) add(other, SpanRole::kOther, -1);
+    add(partner, SpanRole::kLeg, -1);
+    add(hider, SpanRole::kOther, -1);
+    add(face(3), SpanRole::kLeg, 3);
+    EvidenceConfig config;
+    config.hider_partner_m = hider_partner_m;
+    return GatherEvidence(T_lidar_shelf, model, corner_candidate, pre, roles, testing::kWlrAlpha,
+                          true, config);
+  };
+  const double reach = EvidenceConfig{}.hider_partner_m;
+  ASSERT_GT(reach, 0.2);
+  const ShelfEvidence on = evidence(reach, false);
+  EXPECT_EQ(on.legs_occluded, 1);
+  EXPECT_EQ(on.foreign_legs_inside, 0);
+  EXPECT_EQ(on.interior_leg_points, 0);
+  EXPECT_GT(on.interior_object_points, 0.0);
+  const ShelfEvidence off = evidence(0.0, false);
+  EXPECT_EQ(off.legs_occluded, 1);
+  EXPECT_EQ(off.foreign_legs_inside, 1);
+  EXPECT_EQ(off.interior_leg_points, 3);
+  EXPECT_LT(ShelfConfidence(off, 0.0, 3, EvidenceConfig{}),
+            ShelfConfidence(on, 0.0, 3, EvidenceConfig{}));
+  const ShelfEvidence crowded = evidence(reach, true);
+  EXPECT_EQ(crowded.foreign_legs_inside, 1);
+  EXPECT_EQ(crowded.interior_leg_points, 3);
 }
 
 }  // namespace
