@@ -737,53 +737,69 @@ TEST(ShelfEvidenceTest, ALegOfFewReturnsCloseInFrontOfItsBackgroundMayBeABlend) 
   EXPECT_FALSE(MayBeBlend(leg(1, 0.2, 0.25), off));
 }
 
-// A 1075x883 shelf 2.5 m ahead (hand-made returns, as above) whose back-left leg something under
-// it hides: one object 0.3 m in front of the leg on its line of sight (excused: it explains the
-// hidden leg) and, 0.2 m beside it and inside the footprint, a leg-sized cluster that some leg set
-// of the search uses. That cluster is the hider's other part (a person's other leg, a trolley's
-// other upright): an object, not a foreign leg, the phantom's signature (evidence.hider_partner_m).
-// With the rule off it counts as a foreign leg; so too when something else stands inside as well
-// (a crowded spot: posts in clutter around a corner of three, not a person).
+// Hand-made returns (AddSpan, three per cluster) around a 1075x883 shelf 2.5 m ahead whose
+// back-left leg (corner 2) has no cluster: its other legs' near faces 2 cm in front of their
+// centres, and whatever a test adds between them, in beam order.
+class HiddenBackLeftLeg {
+ public:
+  HiddenBackLeftLeg()
+      : model_(PaperModels()[1]), T_lidar_shelf_(2.5 + 0.5 * model_.length_m, 0, 0) {}
+
+  const geometry::Pose2& T_lidar_shelf() const { return T_lidar_shelf_; }
+  // Corner k in the LiDAR frame (LegCentres: 0 front right, 1 back right, 2 back left, 3 front
+  // left).
+  Eigen::Vector2d Corner(int k) const {
+    return T_lidar_shelf_ * model_.LegCentres()[static_cast<std::size_t>(k)];
+  }
+  // The shelf's own leg at corner k (0, 1 or 3).
+  void AddLeg(int k) {
+    const Eigen::Vector2d c = Corner(k);
+    Add(c - 0.02 * c.normalized(), SpanRole::kLeg);
+    Cluster leg;
+    leg.points.assign(pre_.points.end() - 3, pre_.points.end());
+    leg.centroid = pre_.spans.back().centroid;
+    leg.span = static_cast<int>(pre_.spans.size()) - 1;
+    corner_candidate_[static_cast<std::size_t>(k)] = static_cast<int>(pre_.candidates.size());
+    pre_.candidates.push_back(leg);
+  }
+  void Add(const Eigen::Vector2d& centre, SpanRole role) {
+    AddSpan(pre_, centre, 3);
+    roles_.push_back(role);
+  }
+  ShelfEvidence Evidence(const EvidenceConfig& config, bool vouched = true) const {
+    return GatherEvidence(T_lidar_shelf_, model_, corner_candidate_, pre_, roles_,
+                          testing::kWlrAlpha, vouched, config);
+  }
+
+ private:
+  geometry::ShelfModel model_;
+  geometry::Pose2 T_lidar_shelf_;
+  PreprocessOutput pre_;
+  std::vector<SpanRole> roles_;
+  std::array<int, 4> corner_candidate_{-1, -1, -1, -1};
+};
+
+// The shelf's back-left leg hidden by something under the shelf: one object 0.3 m in front of the
+// leg on its line of sight (excused: it explains the hidden leg) and, 0.2 m beside it and inside
+// the footprint, a leg-sized cluster that some leg set of the search uses. That cluster is the
+// hider's other part (a person's other leg, a trolley's other upright): an object, not a foreign
+// leg, the phantom's signature (evidence.hider_partner_m). With the rule off it counts as a
+// foreign leg; so too when something else stands inside as well (a crowded spot: posts in
+// clutter around a corner of three, not a person).
 TEST(ShelfEvidenceTest, TheOtherPartOfWhatHidesALegIsAnObject) {
-  const geometry::ShelfModel model = PaperModels()[1];
-  const geometry::Pose2 T_lidar_shelf(2.5 + 0.5 * model.length_m, 0.0, 0.0);
-  const auto corners =
-      model.LegCentres();  // 0 front right, 1 back right, 2 back left, 3 front left
-  const Eigen::Vector2d hidden = T_lidar_shelf * corners[2];
-  const Eigen::Vector2d hider = hidden - 0.3 * hidden.normalized();
-  const Eigen::Vector2d partner = hider - Eigen::Vector2d(0.0, 0.2);
-  const Eigen::Vector2d other = T_lidar_shelf * Eigen::Vector2d(0.0, -0.1);
-  auto evidence = [&](double hider_partner_m, bool crowded) {
-    PreprocessOutput pre;
-    std::vector<SpanRole> roles;
-    std::array<int, 4> corner_candidate{-1, -1, -1, -1};
-    auto add = [&](const Eigen::Vector2d& centre, SpanRole role, int corner) {
-      AddSpan(pre, centre, 3);
-      roles.push_back(role);
-      if (corner < 0) return;
-      Cluster leg;
-      leg.points.assign(pre.points.end() - 3, pre.points.end());
-      leg.centroid = pre.spans.back().centroid;
-      leg.span = static_cast<int>(pre.spans.size()) - 1;
-      corner_candidate[static_cast<std::size_t>(corner)] = static_cast<int>(pre.candidates.size());
-      pre.candidates.push_back(leg);
-    };
-    // In beam order: front right, back right, (the other object), the partner, the hider, front
-    // left. The own legs' near faces 2 cm in front of their centres.
-    auto face = [&](int k) {
-      const Eigen::Vector2d c = T_lidar_shelf * corners[static_cast<std::size_t>(k)];
-      return Eigen::Vector2d(c - 0.02 * c.normalized());
-    };
-    add(face(0), SpanRole::kLeg, 0);
-    add(face(1), SpanRole::kLeg, 1);
-    if (crowded) add(other, SpanRole::kOther, -1);
-    add(partner, SpanRole::kLeg, -1);
-    add(hider, SpanRole::kOther, -1);
-    add(face(3), SpanRole::kLeg, 3);
+  auto evidence = [](double hider_partner_m, bool crowded) {
+    HiddenBackLeftLeg scene;
+    const Eigen::Vector2d hidden = scene.Corner(2);
+    const Eigen::Vector2d hider = hidden - 0.3 * hidden.normalized();
+    scene.AddLeg(0);
+    scene.AddLeg(1);
+    if (crowded) scene.Add(scene.T_lidar_shelf() * Eigen::Vector2d(0.0, -0.1), SpanRole::kOther);
+    scene.Add(hider - Eigen::Vector2d(0.0, 0.2), SpanRole::kLeg);  // the partner
+    scene.Add(hider, SpanRole::kOther);
+    scene.AddLeg(3);
     EvidenceConfig config;
     config.hider_partner_m = hider_partner_m;
-    return GatherEvidence(T_lidar_shelf, model, corner_candidate, pre, roles, testing::kWlrAlpha,
-                          true, config);
+    return scene.Evidence(config);
   };
   const double reach = EvidenceConfig{}.hider_partner_m;
   ASSERT_GT(reach, 0.2);
@@ -801,6 +817,39 @@ TEST(ShelfEvidenceTest, TheOtherPartOfWhatHidesALegIsAnObject) {
   const ShelfEvidence crowded = evidence(reach, true);
   EXPECT_EQ(crowded.foreign_legs_inside, 1);
   EXPECT_EQ(crowded.interior_leg_points, 3);
+}
+
+// The shelf's back-left leg hidden by an object 1.2 m from the sensor (outside the footprint), and
+// inside the footprint, next to that object in the scan and farther, a leg-sized sliver whose
+// outline the object cuts (kPartlyHiddenLeg): the visible part of something larger standing
+// behind the hider (a box 0.3 m in front of the leg, cut in two). Where the map vouches for the
+// shelf it is an object, as a sliver its own leg cuts is (above); without the map's word, or whole
+// (kLeg), it is a foreign leg. A piece of the wall behind stands between the sliver and the back
+// right leg in the scan, as it would in a real one.
+TEST(ShelfEvidenceTest, ASliverWhatHidesALegCutsInsideAVouchedShelfIsNoForeignLeg) {
+  auto evidence = [](SpanRole role, bool vouched) {
+    HiddenBackLeftLeg scene;
+    const Eigen::Vector2d hidden = scene.Corner(2);
+    const Eigen::Vector2d hider = 1.2 * hidden.normalized();
+    // Three beams before the hider's middle beam, at 3.3 m: its last beam next to the hider's
+    // first.
+    const double bearing = std::atan2(hidden.y(), hidden.x()) - 3.0 * testing::kWlrAlpha;
+    const Eigen::Vector2d sliver = 3.3 * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+    scene.AddLeg(0);
+    scene.AddLeg(1);
+    scene.Add(Eigen::Vector2d(6.0, 0.0), SpanRole::kOther);  // the wall behind, between the two
+    scene.Add(sliver, role);
+    scene.Add(hider, SpanRole::kOther);
+    scene.AddLeg(3);
+    return scene.Evidence(EvidenceConfig{}, vouched);
+  };
+  const ShelfEvidence vouched = evidence(SpanRole::kPartlyHiddenLeg, true);
+  EXPECT_EQ(vouched.legs_occluded, 1);
+  EXPECT_EQ(vouched.interior_points, 3);
+  EXPECT_EQ(vouched.foreign_legs_inside, 0);
+  EXPECT_GT(vouched.interior_object_points, 0.0);
+  EXPECT_EQ(evidence(SpanRole::kPartlyHiddenLeg, false).foreign_legs_inside, 1);
+  EXPECT_EQ(evidence(SpanRole::kLeg, true).foreign_legs_inside, 1);
 }
 
 }  // namespace
