@@ -762,8 +762,8 @@ class HiddenBackLeftLeg {
     corner_candidate_[static_cast<std::size_t>(k)] = static_cast<int>(pre_.candidates.size());
     pre_.candidates.push_back(leg);
   }
-  void Add(const Eigen::Vector2d& centre, SpanRole role) {
-    AddSpan(pre_, centre, 3);
+  void Add(const Eigen::Vector2d& centre, SpanRole role, int returns = 3) {
+    AddSpan(pre_, centre, returns);
     roles_.push_back(role);
   }
   ShelfEvidence Evidence(const EvidenceConfig& config, bool vouched = true) const {
@@ -850,6 +850,36 @@ TEST(ShelfEvidenceTest, ASliverWhatHidesALegCutsInsideAVouchedShelfIsNoForeignLe
   EXPECT_GT(vouched.interior_object_points, 0.0);
   EXPECT_EQ(evidence(SpanRole::kPartlyHiddenLeg, false).foreign_legs_inside, 1);
   EXPECT_EQ(evidence(SpanRole::kLeg, true).foreign_legs_inside, 1);
+}
+
+// Inside the footprint, 3.3 m out, a leg-sized sliver whose outline an object larger than a leg
+// cuts: 18 returns 2 m out (0.2 m across, outside the footprint), its last beam next to the
+// sliver's first. The sliver shows how little of what stands behind that object the scan sees,
+// not how large it is: where the map vouches for the shelf it is an object, no foreign leg.
+// Without the map's word it is one, and so it is when that larger object stands behind the
+// sliver (4 m out), which then cuts nothing. A piece of the wall behind stands between the sliver
+// and the front left leg in the scan.
+TEST(ShelfEvidenceTest, ASliverALargerObjectInFrontCutsInsideAVouchedShelfIsNoForeignLeg) {
+  auto evidence = [](double object_range_m, bool vouched) {
+    HiddenBackLeftLeg scene;
+    const double alpha = testing::kWlrAlpha;
+    auto at = [&](double range, int beam) {
+      return Eigen::Vector2d(range * std::cos(beam * alpha), range * std::sin(beam * alpha));
+    };
+    scene.AddLeg(0);
+    scene.AddLeg(1);
+    scene.Add(at(object_range_m, -6), SpanRole::kOther, 18);  // beams -15 ... 2
+    scene.Add(at(3.3, 4), SpanRole::kPartlyHiddenLeg);        // beams 3 ... 5
+    scene.Add(at(6.0, 12), SpanRole::kOther);  // the wall behind, before the front left leg
+    scene.AddLeg(3);
+    return scene.Evidence(EvidenceConfig{}, vouched);
+  };
+  const ShelfEvidence vouched = evidence(2.0, true);
+  EXPECT_EQ(vouched.interior_points, 3);
+  EXPECT_EQ(vouched.foreign_legs_inside, 0);
+  EXPECT_GT(vouched.interior_object_points, 0.0);
+  EXPECT_EQ(evidence(2.0, false).foreign_legs_inside, 1);
+  EXPECT_EQ(evidence(4.0, true).foreign_legs_inside, 1);
 }
 
 }  // namespace
