@@ -607,8 +607,9 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   }
   // A leg-sized cluster beside what hides one of the shelf's legs is most often the hider's other
   // part (a person's other leg, a box's far corner): an object then, like the hider, when it is
-  // the one thing inside besides the hider (eval-layouts seeds 1 +2, the 100000 scenes +23 right
-  // first, phantoms and every clutter sample unchanged). Leg-sized posts crowding a corner of
+  // the one thing inside besides the hider (with the two sliver rules in IsForeignLeg, against
+  // 6d0a6d0: eval-layouts seeds 1 +3, the 100000 scenes +26 right first, phantoms and every
+  // clutter sample unchanged; most of it this rule's). Leg-sized posts crowding a corner of
   // three posts whose fourth one hides are clutter, not a person, and count as legs (--class
   // clutter --scenes-per-class 3000 --seed0 1000: a detection more without that condition).
   const bool hider_part =
