@@ -737,13 +737,15 @@ TEST(ShelfEvidenceTest, ALegOfFewReturnsCloseInFrontOfItsBackgroundMayBeABlend) 
   EXPECT_FALSE(MayBeBlend(leg(1, 0.2, 0.25), off));
 }
 
-// Hand-made returns (AddSpan, three per cluster) around a 1075x883 shelf 2.5 m ahead whose
-// back-left leg (corner 2) has no cluster: its other legs' near faces 2 cm in front of their
-// centres, and whatever a test adds between them, in beam order.
+// Hand-made returns (AddSpan, three per cluster) around a 1075x883 shelf (by default 2.5 m ahead,
+// square to the sensor) whose back-left leg (corner 2) has no cluster: its other legs' near faces
+// 2 cm in front of their centres, and whatever a test adds between them, in beam order.
 class HiddenBackLeftLeg {
  public:
-  HiddenBackLeftLeg()
-      : model_(PaperModels()[1]), T_lidar_shelf_(2.5 + 0.5 * model_.length_m, 0, 0) {}
+  HiddenBackLeftLeg() : HiddenBackLeftLeg(2.5, 0.0) {}
+  // The front edge `front_m` ahead, the shelf's centre `left_m` to the left.
+  HiddenBackLeftLeg(double front_m, double left_m)
+      : model_(PaperModels()[1]), T_lidar_shelf_(front_m + 0.5 * model_.length_m, left_m, 0.0) {}
 
   const geometry::Pose2& T_lidar_shelf() const { return T_lidar_shelf_; }
   // Corner k in the LiDAR frame (LegCentres: 0 front right, 1 back right, 2 back left, 3 front
@@ -880,6 +882,23 @@ TEST(ShelfEvidenceTest, ASliverALargerObjectInFrontCutsInsideAVouchedShelfIsNoFo
   EXPECT_GT(vouched.interior_object_points, 0.0);
   EXPECT_EQ(evidence(2.0, false).foreign_legs_inside, 1);
   EXPECT_EQ(evidence(4.0, true).foreign_legs_inside, 1);
+}
+
+// The shelf seen along its left side (that side on the sensor's axis): its front-left leg hides the
+// back-left one, and a leg-sized cluster that some leg set uses stands inside, 0.34 m from that
+// front leg. The shelf's own leg has no other part: the cluster counts as a foreign leg, as it
+// would where a phantom on two neighbours' legs seen along a row keeps a skipped leg a gap from one
+// of its own (evidence.hider_partner_m looks beside hiders that are not the shelf's legs).
+TEST(ShelfEvidenceTest, TheShelfsOwnLegHidingAnotherHasNoOtherPart) {
+  HiddenBackLeftLeg scene(2.5, -0.5 * PaperModels()[1].width_m);
+  scene.AddLeg(0);
+  scene.AddLeg(1);
+  scene.Add(Eigen::Vector2d(2.8, -0.15), SpanRole::kLeg);
+  scene.AddLeg(3);
+  const ShelfEvidence ev = scene.Evidence(EvidenceConfig{});
+  EXPECT_EQ(ev.legs_occluded, 1);
+  EXPECT_EQ(ev.foreign_legs_inside, 1);
+  EXPECT_EQ(ev.interior_leg_points, 3);
 }
 
 }  // namespace
