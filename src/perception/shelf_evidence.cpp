@@ -589,7 +589,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
       return (s > 0 && Listed(spans, si - 1)) || Listed(spans, si + 1);
     };
     const double max_leg_m = leg_extent + config.leg_size_margin_m;
-    const bool beside_known = beside(own_spans) || beside(excused_spans) ||
+    const bool beside_known = beside(own_spans) || beside(hiders) ||
                               LargerObjectInFront(pre, s, si - 1, max_leg_m) ||
                               LargerObjectInFront(pre, s, si + 1, max_leg_m);
     if (!IsForeignLeg(pre, span, seen_as, beside_known, leg_extent, alpha, vouched, config)) {

@@ -103,7 +103,8 @@ bool MayBeBlend(const Cluster& c, const EvidenceConfig& config);
 ///   point of a foreign leg once, each other interior point (interior_object_points: near the
 ///   sensor less than one each) object_point_weight times (once when a leg is missing, nothing
 ///   hides it and no map vouches for the shelf), and each foreign leg inside foreign_leg_points
-///   more;
+///   more (what hides a missing leg counts nothing, and a foreign leg within hider_partner_m of
+///   it, the one thing inside besides it, counts as an object: the hider's other part);
 /// - leg size: 1 / (1 + (leg_width_error_m / leg_width_scale_m)^2)
 ///             / (1 + (leg_width_bias_excess_m / leg_width_scale_m)^2).
 /// It reads as "how sure the scan makes us that this is a shelf of this model here": 1 is four
