@@ -546,6 +546,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   std::vector<int> hiders;
   std::copy_if(excused_spans.begin(), excused_spans.end(), std::back_inserter(hiders),
                [&](int span) { return !Listed(own_spans, span); });
+  const double max_leg_m = leg_extent + config.leg_size_margin_m;  // longest leg-sized cluster
   std::vector<ForeignLeg> partners;  // foreign legs beside a hider (below)
   int interior_spans = 0;            // clusters with returns inside
   for (std::size_t s = 0; s < pre.spans.size(); ++s) {
@@ -585,13 +586,10 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     const SpanRole seen_as = role == SpanRole::kLoneLeg && !on_edge ? SpanRole::kOther : role;
     // Its neighbour in the scan is one of the shelf's own legs, what hides one of them, or an
     // object larger than a leg standing nearer (IsForeignLeg says why).
-    auto beside = [&](const std::vector<int>& spans) {
-      return (s > 0 && Listed(spans, si - 1)) || Listed(spans, si + 1);
+    auto known_cutter = [&](int o) {
+      return Listed(own_spans, o) || Listed(hiders, o) || LargerObjectInFront(pre, s, o, max_leg_m);
     };
-    const double max_leg_m = leg_extent + config.leg_size_margin_m;
-    const bool beside_known = beside(own_spans) || beside(hiders) ||
-                              LargerObjectInFront(pre, s, si - 1, max_leg_m) ||
-                              LargerObjectInFront(pre, s, si + 1, max_leg_m);
+    const bool beside_known = known_cutter(si - 1) || known_cutter(si + 1);
     if (!IsForeignLeg(pre, span, seen_as, beside_known, leg_extent, alpha, vouched, config)) {
       ev.interior_object_points += surface;
       continue;
