@@ -757,9 +757,11 @@ class HiddenBackLeftLeg {
   void AddLeg(int k) {
     const Eigen::Vector2d c = Corner(k);
     Add(c - 0.02 * c.normalized(), SpanRole::kLeg);
+    const ClusterSpan& span = pre_.spans.back();
     Cluster leg;
-    leg.points.assign(pre_.points.end() - 3, pre_.points.end());
-    leg.centroid = pre_.spans.back().centroid;
+    leg.points.assign(pre_.points.begin() + static_cast<std::ptrdiff_t>(span.begin),
+                      pre_.points.begin() + static_cast<std::ptrdiff_t>(span.end));
+    leg.centroid = span.centroid;
     leg.span = static_cast<int>(pre_.spans.size()) - 1;
     corner_candidate_[static_cast<std::size_t>(k)] = static_cast<int>(pre_.candidates.size());
     pre_.candidates.push_back(leg);
