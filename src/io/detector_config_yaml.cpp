@@ -158,6 +158,7 @@ void ReadCompletion(YamlFields f, perception::LegCompletionConfig& c) {
   f.Read("lone_return_sigmas", c.lone_return_sigmas);
   f.Read("flush_object_max_m", c.flush_object_max_m);
   f.Read("flush_edge_background", c.flush_edge_background);
+  f.Read("merged_candidates", c.merged_candidates);
   f.RejectUnknown();
 }
 

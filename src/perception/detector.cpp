@@ -452,7 +452,14 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   if (set.count == 3 && !vouched && ev.legs_seen < 4) {
     min_confidence = std::max(min_confidence, config.evidence.min_confidence_unvouched);
   }
-  if (blended) min_confidence = std::max(min_confidence, config.completion.blended_min_confidence);
+  // So is a set leaning on a leg cut out of a wider candidate (completion.merged_candidates): the
+  // search took those returns for part of something else.
+  const bool cut_from_candidate =
+      std::any_of(set.legs.begin(), set.legs.begin() + set.count,
+                  [&](int leg) { return in.pre.candidates[leg].cut_from_candidate; });
+  if (blended || cut_from_candidate) {
+    min_confidence = std::max(min_confidence, config.completion.blended_min_confidence);
+  }
   if (ev.confidence < min_confidence) {
     rec.verdict = Verdict::kLowConfidence;
     return h;

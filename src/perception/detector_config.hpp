@@ -325,6 +325,9 @@ struct LegCompletionConfig {
                                       ///< background: the first return out (two dropped beams
                                       ///< skipped) lies farther, or none does; not a nearer
                                       ///< occluder nor the same surface past a dropout
+  bool merged_candidates = true;      ///< returns at a corner that are part of a wider candidate
+                                      ///< (a leg merged with a person's leg beside it) are cut as
+                                      ///< a leg the search never saw, under the flush rules above
 };
 
 /// All detector parameters, one struct per stage (config/detector.yaml).

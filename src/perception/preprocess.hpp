@@ -31,6 +31,9 @@ struct Cluster {
   /// Completed as a leg flush with something small beside it (CompleteLegSets,
   /// completion.flush_object_max_m): its returns trimmed to the leg's extent from its free edge.
   bool flush = false;
+  /// ... and cut from a wider candidate's returns (completion.merged_candidates): the search
+  /// took them for part of something else, so a set leaning on it is held as a blended one is.
+  bool cut_from_candidate = false;
 };
 
 /// Where a blended leg (Cluster::assumed_range_m set) stands: at its assumed range on the
