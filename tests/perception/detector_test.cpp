@@ -645,8 +645,7 @@ struct TouchingPostCounts {
 // by one with `off`. Every first detection of either must stand within kCentreTol and kYawTol of
 // the truth, and every leg the default detector's returned hypotheses took flush within 2 cm of
 // the touched leg.
-TouchingPostCounts DetectWithATouchingPost(const DetectorConfig& off, double depth,
-                                           double radius) {
+TouchingPostCounts DetectWithATouchingPost(const DetectorConfig& off, double depth, double radius) {
   const auto models = PaperModels();
   const Detector detector(models);
   const Detector without(models, off);
