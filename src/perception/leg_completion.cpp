@@ -518,10 +518,6 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
   // Pieces cut from a surface they stand in front of are looked at as the rest of the surface:
   // such a piece is as often a thin leg seen blended with the wall behind it, which is what
   // completion looks for (eval-layouts seeds 1: 2 round legs of 400 lost otherwise).
-  // A candidate that reaches past the cut on a side (a leg merged with a person's leg beside it,
-  // no depth step between them) was searched for at the middle of both, never at the leg's place:
-  // the cut is judged as one the search never saw (StandsAlone: trimmed to the leg when what
-  // goes on past it is small and ends on one side only).
   std::vector<int> candidate_of_beam(static_cast<std::size_t>(max_beam) + 1, -1);
   for (std::size_t k = 0; k < pre.candidates.size(); ++k) {
     const Cluster& c = pre.candidates[k];
@@ -535,8 +531,11 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
       return candidate_of_beam[static_cast<std::size_t>(q.beam)] >= 0;
     });
   };
-  // Wider means wider than the leg at the corner may look: its silhouette drawn wider by the
-  // scan's bloom, and an edge beam either side.
+  // A candidate that holds more than the cut and is wider than the leg at the corner may look
+  // (its silhouette, drawn wider by the scan's bloom, and an edge beam) is a leg merged with what
+  // touches it, no depth step between them (a person's leg): the search placed it at the middle
+  // of both, never at the leg's, so the cut is judged as one the search never saw (StandsAlone:
+  // trimmed to the leg when what goes on past it is small and ends on one side only).
   auto part_of_wider_candidate = [&](const Cluster& c, const Eigen::Vector2d& corner,
                                      const geometry::LegModel& leg, double shelf_yaw) {
     const int k = candidate_of_beam[static_cast<std::size_t>(c.points.front().beam)];
@@ -545,11 +544,11 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
       return candidate_of_beam[static_cast<std::size_t>(q.beam)] == k;
     });
     const Cluster& whole = pre.candidates[static_cast<std::size_t>(k)];
-    if (!one || whole.points.size() < 3) return false;
+    if (!one || whole.points.size() <= c.points.size() || whole.points.size() < 3) return false;
     const double span =
         std::abs(geometry::AngleDiff(whole.points.back().angle, whole.points.front().angle));
     const double beam = span / std::abs(whole.points.back().beam - whole.points.front().beam);
-    return span > SilhouetteWidth(corner, leg, shelf_yaw) + look.bloom_rad + 1.0 * beam;
+    return span > SilhouetteWidth(corner, leg, shelf_yaw) + look.bloom_rad + beam;
   };
 
   std::set<std::array<int, 4>> seen_sets;

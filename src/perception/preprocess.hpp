@@ -29,7 +29,7 @@ struct Cluster {
   /// rule would have split: CompleteLegSets looks at its returns as at any wall's.
   bool from_surface = false;
   /// Completed as a leg flush with something small beside it (CompleteLegSets,
-  /// completion.flush_object_max_m): its returns trimmed to the leg's extent from its free edge.
+  /// completion.flush_object_max_m): its returns trimmed to the leg from its free edge.
   bool flush = false;
   /// ... and cut from a wider candidate's returns (completion.merged_candidates): the search
   /// took them for part of something else, so a set leaning on it is held as a blended one is.
