@@ -147,6 +147,7 @@ void ReadCompletion(YamlFields f, perception::LegCompletionConfig& c) {
   f.Read("max_blend_m", c.max_blend_m);
   f.Read("blended_max_err_sum_m", c.blended_max_err_sum_m);
   f.Read("blended_min_confidence", c.blended_min_confidence);
+  f.Read("min_measured_legs", c.min_measured_legs);
   f.Read("surface_min_offset_m", c.surface_min_offset_m);
   f.Read("surface_offset_sigmas", c.surface_offset_sigmas);
   f.Read("surface_open_end", c.surface_open_end);

@@ -144,6 +144,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(c.completion.blended_max_err_sum_m > 0.0, "completion.blended_max_err_sum_m", "> 0");
   k.Check(c.completion.blended_min_confidence >= 0.0 && c.completion.blended_min_confidence < 1.0,
           "completion.blended_min_confidence", "in [0, 1)");
+  k.Check(c.completion.min_measured_legs >= 0 && c.completion.min_measured_legs <= 3,
+          "completion.min_measured_legs", "in [0, 3]");
   k.Check(c.completion.surface_min_offset_m > 0.0, "completion.surface_min_offset_m", "> 0");
   k.Check(c.completion.surface_offset_sigmas >= 0.0, "completion.surface_offset_sigmas",
           ">= 0 (0: off)");

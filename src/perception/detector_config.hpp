@@ -290,6 +290,9 @@ struct LegCompletionConfig {
                                   ///< the leg blended with it (its bearing only); 0: off
   double blended_max_err_sum_m = 0.03;  ///< [m] a set with a blended leg: Eq. 2 err_sum bound
   double blended_min_confidence = 0.5;  ///< [-] and the confidence it must reach
+  int min_measured_legs = 2;  ///< a set needs this many legs whose ranges the scan measured (not
+                              ///< blended): fewer fix no size, the blends standing where the
+                              ///< pose puts them (0 or 1: off)
   double surface_min_offset_m = 0.025;  ///< [m] returns at a corner that lie on a surface (a wall
                                         ///< a few cm behind the leg) are its leg when they stand
                                         ///< this far in front of the surface beside them ...

@@ -206,6 +206,8 @@ const RuleCase kCases[] = {
      [](auto& c) { c.completion.blended_max_err_sum_m = 0.0; }},
     {"blended_confidence", "completion.blended_min_confidence",
      [](auto& c) { c.completion.blended_min_confidence = 1.0; }},
+    {"measured_legs", "completion.min_measured_legs",
+     [](auto& c) { c.completion.min_measured_legs = 4; }},
     {"surface_offset", "completion.surface_min_offset_m",
      [](auto& c) { c.completion.surface_min_offset_m = 0.0; }},
     {"surface_sigmas", "completion.surface_offset_sigmas",
