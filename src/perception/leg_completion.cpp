@@ -184,10 +184,10 @@ bool BackgroundPastFreeEdge(const std::vector<ScanPoint>& points, const Cluster&
 // or mixed points ramping from an object to its background: ContinuesSurface) and a single one
 // is no mixed point, unless it lies at a range the predicted leg returns from (`at_leg_range`,
 // LoneReturnAtLegRange). A cut flush with something beside it (below) is trimmed to the leg: to
-// its silhouette as a shelf turned `shelf_yaw` shows it, when given.
+// its silhouette at the corner (`silhouette_rad`, SilhouetteWidth), when given.
 bool StandsAlone(const std::vector<ScanPoint>& points, Cluster& c, const Surroundings& s,
                  bool at_leg_range, const Eigen::Vector2d& corner, const geometry::LegModel& leg,
-                 std::optional<double> shelf_yaw = std::nullopt) {
+                 std::optional<double> silhouette_rad = std::nullopt) {
   // The object going on past one side only and ending within flush_object_m is something small
   // beside the leg at its own depth (a person's leg whose front stands a few centimetres before
   // the leg's), no depth step between them: the outline on the other side still ends the leg,
@@ -218,8 +218,8 @@ bool StandsAlone(const std::vector<ScanPoint>& points, Cluster& c, const Surroun
   if (flush) {
     // The cut reaches a few centimetres past the leg into what stands beside it (corner_margin_m):
     // only the returns near its free edge are the leg's. Within the leg's silhouette at the
-    // corner as the shelf's heading turns it (`shelf_yaw`, drawn wider by the scan's bloom) when
-    // the cut comes out of a wider candidate: the leg's extent there let a 5 cm post's returns
+    // corner as the shelf's heading turns it (`silhouette_rad`, drawn wider by the scan's bloom)
+    // when the cut comes out of a wider candidate: the leg's extent there let a 5 cm post's returns
     // in, the leg fitted 1-1.5 cm off (DetectorTest.LegMergedIntoANarrowCandidateIsCutAtItsCorner:
     // 29 of 40 scans found, 34 with the silhouette). Otherwise within the leg's extent (drawn
     // wider by the bloom) of that edge: the silhouette there too measured the same (eval-layouts
@@ -227,8 +227,8 @@ bool StandsAlone(const std::vector<ScanPoint>& points, Cluster& c, const Surroun
     // samples and the independent scenes unchanged) and so stays unchanged.
     const ScanPoint edge = past.back ? c.points.front() : c.points.back();
     trimmed = c;
-    if (shelf_yaw) {
-      const double width_rad = SilhouetteWidth(corner, leg, *shelf_yaw) + s.bloom_rad;
+    if (silhouette_rad) {
+      const double width_rad = *silhouette_rad + s.bloom_rad;
       std::erase_if(trimmed->points, [&](const ScanPoint& q) {
         return std::abs(geometry::AngleDiff(q.angle, edge.angle)) > width_rad;
       });
@@ -532,12 +532,11 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
     });
   };
   // A candidate that holds more than the cut and is wider than the leg at the corner may look
-  // (its silhouette, drawn wider by the scan's bloom, and an edge beam) is a leg merged with what
-  // touches it, no depth step between them (a person's leg): the search placed it at the middle
-  // of both, never at the leg's, so the cut is judged as one the search never saw (StandsAlone:
-  // trimmed to the leg when what goes on past it is small and ends on one side only).
-  auto part_of_wider_candidate = [&](const Cluster& c, const Eigen::Vector2d& corner,
-                                     const geometry::LegModel& leg, double shelf_yaw) {
+  // (its silhouette `silhouette_rad`, drawn wider by the scan's bloom, and an edge beam) is a leg
+  // merged with what touches it, no depth step between them (a person's leg): the search placed
+  // it at the middle of both, never at the leg's, so the cut is judged as one the search never saw
+  // (StandsAlone: trimmed to the leg when what goes on past it is small and ends on one side only).
+  auto part_of_wider_candidate = [&](const Cluster& c, double silhouette_rad) {
     const int k = candidate_of_beam[static_cast<std::size_t>(c.points.front().beam)];
     if (k < 0) return false;
     const bool one = std::all_of(c.points.begin(), c.points.end(), [&](const ScanPoint& q) {
@@ -548,7 +547,7 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
     const double span =
         std::abs(geometry::AngleDiff(whole.points.back().angle, whole.points.front().angle));
     const double beam = span / std::abs(whole.points.back().beam - whole.points.front().beam);
-    return span > SilhouetteWidth(corner, leg, shelf_yaw) + look.bloom_rad + beam;
+    return span > silhouette_rad + look.bloom_rad + beam;
   };
 
   std::set<std::array<int, 4>> seen_sets;
@@ -661,11 +660,13 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                 // higher confidence asked of such a set (blended_min_confidence) keeps a box's end
                 // in clutter from passing as a leg beside it (--class clutter --seed0 200000, 3000
                 // scenes: one detection more without it).
+                const double silhouette_rad = SilhouetteWidth(corner, model.leg, T.yaw);
                 if (BlendedCandidateAtCorner(scan_points, c, corner, config, look.step_m)) {
                   c.assumed_range_m = corner.norm();
                 } else if (!config.merged_candidates ||
-                           !part_of_wider_candidate(c, corner, model.leg, T.yaw) ||
-                           !StandsAlone(scan_points, c, look, false, corner, model.leg, T.yaw) ||
+                           !part_of_wider_candidate(c, silhouette_rad) ||
+                           !StandsAlone(scan_points, c, look, false, corner, model.leg,
+                                        silhouette_rad) ||
                            !c.flush) {
                   c = Cluster{};
                 } else {
