@@ -176,6 +176,10 @@ struct EvidenceConfig {
                                           ///< edge and counts as inside; 0: off
   double edge_corner_clearance_m = 0.2;   ///< [m] ... when at least this far from every corner
   double edge_partner_m = 0.4;            ///< [m] ... and no other object stands this near it
+  double edge_lone_step_sigmas = 5.0;     ///< [-] one return counts there as a leg only when
+                                          ///< the beams either side return from at least this
+                                          ///< many times the range noise (x sqrt 2) behind it
+                                          ///< (a noise spike on a wall is no leg); 0: any step
   double hider_partner_m = 0.4;           ///< [m] a leg-sized cluster inside this near what
                                           ///< hides one of the shelf's legs is the hider's other
                                           ///< part (a person's other leg): an object; 0: off

@@ -126,3 +126,25 @@ def test_dump_all_writes_every_scene_with_its_outcome(gen, models, tmp_path):
         name = t.name[: -len(".truth.json")]
         assert (tmp_path / f"{name}.scan.json").exists()
         assert json.loads(t.read_text())["outcome"] == by_name[name]
+
+
+def test_a_noise_spike_on_an_edge_line_is_no_leg(gen, models, source_dir, tmp_path):
+    """Scene 19 of against_wall, seed 2001: a 1250x1250 against a wall, seen by a UST-10LX at
+    20 mm noise. One wall return 9 cm (4.5 times the noise) nearer than its neighbours lies on
+    the shelf's back edge line: one return with a depth step behind it on both sides, what a thin
+    leg seen by one beam looks like. A step within evidence.edge_lone_step_sigmas (5) times the
+    noise (x sqrt 2) is the noise's tail, no leg: the shelf is returned first, within 5 cm, its
+    model. With the rule off (0) the spike counts as a neighbour's leg under the shelf's edge and
+    the shelf is missed."""
+    shelfdock = pytest.importorskip("shelfdock")
+    config = (source_dir / "config" / "detector.yaml").read_text()
+    assert "  edge_lone_step_sigmas: 5.0" in config
+    off = tmp_path / "any_step.yaml"
+    off.write_text(config.replace("  edge_lone_step_sigmas: 5.0", "  edge_lone_step_sigmas: 0.0"))
+    sc = gen.generate_scene("against_wall", 2001, 19)
+    assert sc["findable"] and sc["sensor"]["name"] == "ust10lx"
+    rule = gen.evaluate_scene(shelfdock.Detector(models=str(models)), sc)
+    without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
+    assert rule["outcome"] == "right", rule
+    assert rule["centre_err"] <= gen.MATCH_TOL
+    assert without["outcome"] == "missed", without
