@@ -124,6 +124,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("width_bloom_min_step_m", c.width_bloom_min_step_m);
   f.Read("width_bloom_own_legs", c.width_bloom_own_legs);
   f.Read("width_bloom_three_legs_beams", c.width_bloom_three_legs_beams);
+  f.Read("width_bloom_far_legs", c.width_bloom_far_legs);
   f.Read("blend_max_returns", c.blend_max_returns);
   f.Read("blend_max_step_m", c.blend_max_step_m);
   f.Read("blend_narrow_bias_m", c.blend_narrow_bias_m);

@@ -235,6 +235,10 @@ struct EvidenceConfig {
   double width_bloom_three_legs_beams = 0.5;  ///< [beams] with three legs, their own bloom is the
                                               ///< least of their excess widths less this many
                                               ///< beam spacings
+  bool width_bloom_far_legs = true;  ///< ... read from the legs whose background stands more
+                                     ///< than blend_max_step_m behind both sides of their
+                                     ///< outline, when two or more do (a near background blends
+                                     ///< with a leg's edge beams and hides its bloom)
   /// A leg of at most blend_max_returns returns whose beams either side returned from at most
   /// blend_max_step_m behind it may be a thinner leg blended with its background (MayBeBlend);
   /// a hypothesis on two or more such legs whose legs look narrower than its model's by more
