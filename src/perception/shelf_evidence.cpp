@@ -381,10 +381,12 @@ LegWidth MeasureLegWidth(const Cluster& c, const Eigen::Vector2d& centre,
 // added.
 double OwnLegsBloom(const std::array<std::optional<LegWidth>, 4>& widths,
                     double three_legs_margin_rad, double far_step_m) {
-  const auto far = std::count_if(widths.begin(), widths.end(), [&](const auto& w) {
-    return w && w->closed && w->background_step_m > far_step_m;
-  });
-  const double min_step = far >= 2 ? far_step_m : -std::numeric_limits<double>::infinity();
+  auto before_far_background = [&](const LegWidth& w) {
+    return w.closed && w.background_step_m > far_step_m;
+  };
+  const bool far_only = std::count_if(widths.begin(), widths.end(), [&](const auto& w) {
+                          return w && before_far_background(*w);
+                        }) >= 2;
   int seen_legs = 0;
   int closed_legs = 0;
   double sum = 0.0;
@@ -392,7 +394,7 @@ double OwnLegsBloom(const std::array<std::optional<LegWidth>, 4>& widths,
   for (const auto& w : widths) {
     if (!w) continue;
     ++seen_legs;
-    if (!w->closed || w->background_step_m <= min_step) continue;
+    if (!w->closed || (far_only && !before_far_background(*w))) continue;
     const double excess = (w->seen_m - w->expected_m) / w->range_m;
     sum += excess;
     least = std::min(least, excess - three_legs_margin_rad);
