@@ -147,6 +147,7 @@ void ReadCompletion(YamlFields f, perception::LegCompletionConfig& c) {
   f.Read("enabled", c.enabled);
   f.Read("corner_margin_m", c.corner_margin_m);
   f.Read("max_blend_m", c.max_blend_m);
+  f.Read("blend_partner_max_m", c.blend_partner_max_m);
   f.Read("blended_max_err_sum_m", c.blended_max_err_sum_m);
   f.Read("blended_min_confidence", c.blended_min_confidence);
   f.Read("min_measured_legs", c.min_measured_legs);

@@ -142,6 +142,8 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           "preset_gate.map_error_yaw_rad", "<= preset_gate.max_yaw_offset_rad");
   k.Check(c.completion.corner_margin_m >= 0.0, "completion.corner_margin_m", ">= 0");
   k.Check(c.completion.max_blend_m >= 0.0, "completion.max_blend_m", ">= 0 (0: off)");
+  k.Check(c.completion.blend_partner_max_m >= 0.0, "completion.blend_partner_max_m",
+          ">= 0 (0: off)");
   k.Check(c.completion.blended_max_err_sum_m > 0.0, "completion.blended_max_err_sum_m", "> 0");
   k.Check(c.completion.blended_min_confidence >= 0.0 && c.completion.blended_min_confidence < 1.0,
           "completion.blended_min_confidence", "in [0, 1)");

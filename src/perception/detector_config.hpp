@@ -290,12 +290,17 @@ struct PresetGateConfig {
 /// map_error_yaw_rad), not merely inside the preset gate, which also allows for shelves pushed
 /// about.
 struct LegCompletionConfig {
-  bool enabled = true;            ///< with a preset and nothing found near it, complete pairs
-  double corner_margin_m = 0.03;  ///< [m] returns within half the leg's extent plus this of a
-                                  ///< predicted corner are its leg
-  double max_blend_m = 0.3;       ///< [m] with none there, returns on the corner's bearing up to
-                                  ///< this far behind it and in front of their background are
-                                  ///< the leg blended with it (its bearing only); 0: off
+  bool enabled = true;               ///< with a preset and nothing found near it, complete pairs
+  double corner_margin_m = 0.03;     ///< [m] returns within half the leg's extent plus this of a
+                                     ///< predicted corner are its leg
+  double max_blend_m = 0.3;          ///< [m] with none there, returns on the corner's bearing up to
+                                     ///< this far behind it and in front of their background are
+                                     ///< the leg blended with it (its bearing only); 0: off
+  double blend_partner_max_m = 0.8;  ///< [m] ... those farther than candidate_blend_far_max_m
+                                     ///< behind it only when something stands within this behind
+                                     ///< the corner to blend with (wider where the scan bridges
+                                     ///< wider steps, any where its sensor blends every echo);
+                                     ///< 0: off
   double blended_max_err_sum_m = 0.03;  ///< [m] a set with a blended leg: Eq. 2 err_sum bound
   double blended_min_confidence = 0.5;  ///< [-] and the confidence it must reach
   int min_measured_legs = 2;  ///< a set needs this many legs whose ranges the scan measured (not

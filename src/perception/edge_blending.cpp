@@ -26,7 +26,10 @@ EdgeBlendingEstimate EstimateEdgeBlending(const std::vector<ScanPoint>& points, 
     if (!consecutive(i, 5) || !flat(i + 3, i + 4)) continue;
     const double a = points[i + 1].range, b = points[i + 3].range, m = points[i + 2].range;
     const double lo = std::min(a, b), hi = std::max(a, b);
-    if (hi - lo >= min_gap_m && m > lo + flat_m && m < hi - flat_m) ++out.bridged;
+    if (hi - lo >= min_gap_m && m > lo + flat_m && m < hi - flat_m) {
+      ++out.bridged;
+      out.widest_bridged_m = std::max(out.widest_bridged_m, hi - lo);
+    }
   }
   return out;
 }

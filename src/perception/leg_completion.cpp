@@ -135,6 +135,13 @@ struct Surroundings {
   bool flush_edge_background = true;  // a flush cut's free edge must show the background past it
 };
 
+// What a blend at an empty corner needs behind it (BlendedView): returns deeper than `beyond_m`
+// behind the corner count only with something within `reach_m` behind it to blend with.
+struct BlendPartner {
+  double beyond_m = 0.0;
+  double reach_m = std::numeric_limits<double>::infinity();
+};
+
 // True when the cut's outline on the side where the object does not go on (`free_is_front`: its
 // first return's side) ends where the leg predicted at `corner` would show its edge: the outer
 // return lies off the corner's bearing, outward, by the leg's half silhouette (between half its
@@ -334,9 +341,23 @@ Cluster BlendOnSurface(const std::vector<ScanPoint>& points, const Eigen::Vector
 // they make carries the corner's range (Cluster::assumed_range_m). Empty when the window holds a
 // return in front of the leg (something hides it), when the background is unknown (no return
 // beside the window) or when the blend is not one run of beams.
+//
+// A blend needs something to blend with: a pulsed receiver merges the echoes of two surfaces
+// into one only when they stand within a pulse's length of each other, and returns the leg's own
+// echo before a background farther off. So returns deeper behind the corner than
+// `partner.beyond_m` (what a neighbour's leg cannot stand within: shelves in rows stand 0.2 m
+// apart or more) count only when what stands behind them, in the window or beside it, lies within
+// `partner.reach_m` behind the corner; otherwise they are an object of their own, a neighbour's
+// leg or a piece of wall. The independent generator's seed 1001 (against_wall 22: a 1075 x 883
+// over two round-legged shelves' front legs, completed by a third shelf's leg 0.29 m behind one
+// corner and a wall piece 0.17 m behind the other, the wall 1.5 m behind both) returned such a
+// phantom. Independent seeds 1-4001 phantom scenes 0 / 1 / 0 / 0 / 0 -> 0, right first the same;
+// eval-layouts, 100000 scenes: phantom scenes 23 -> 22, right first the same; the receiver
+// variants' 26 samples 126709 -> 126692 right first (most under blend_any and blend_1p5m, which
+// merge echoes farther apart than their scans showed), phantom scenes 225 -> 224.
 Cluster BlendedView(const std::vector<ScanPoint>& points, const Eigen::Vector2d& corner,
                     const geometry::LegModel& leg, double margin_m, double max_blend_m,
-                    double step_m) {
+                    const BlendPartner& partner, double step_m) {
   Cluster c;
   const double range = corner.norm();
   if (range <= 0.0) return c;
@@ -349,15 +370,23 @@ Cluster BlendedView(const std::vector<ScanPoint>& points, const Eigen::Vector2d&
   }
   if (!std::isfinite(background)) return c;
   const double limit = std::min(range + max_blend_m, background - step_m);
+  double behind = background;  // the nearest return behind the blend: what it may blend with
   for (int beam = first; beam <= last; ++beam) {
     const ScanPoint* q = FindBeam(points, beam);
     if (q == nullptr) continue;
     if (q->range < range - 0.5 * leg.Extent()) return {};  // something in front hides the leg
-    if (q->range > limit) continue;                        // the background, or too far
+    if (q->range > limit) {                                // the background, or too far
+      behind = std::min(behind, q->range);
+      continue;
+    }
     if (!c.points.empty() && q->beam != c.points.back().beam + 1) return {};
     c.points.push_back(*q);
   }
   if (c.points.empty()) return c;
+  const bool deep = std::any_of(c.points.begin(), c.points.end(), [&](const ScanPoint& q) {
+    return q.range - range > partner.beyond_m;
+  });
+  if (deep && behind - range > partner.reach_m) return {};
   for (const ScanPoint& q : c.points) c.centroid += q.p;
   c.centroid /= static_cast<double>(c.points.size());
   c.extent_m = (c.points.back().p - c.points.front().p).norm();
@@ -453,6 +482,15 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
                           config.flush_object_max_m,
                           pre.width_bloom_rad,
                           config.flush_edge_background};
+
+  // How far behind a corner what a blend there is made with may stand (BlendedView): a pulse's
+  // length by default, as wide as the widest step the scan shows bridged by a mixed point, any
+  // distance where the sensor blends every echo of a beam.
+  const BlendPartner blend_partner{
+      config.candidate_blend_far_max_m,
+      config.blend_partner_max_m <= 0.0 || pre.blends_every_echo
+          ? std::numeric_limits<double>::infinity()
+          : std::max(config.blend_partner_max_m, pre.edge_blending.widest_bridged_m)};
 
   // The widest piece and the step past an open end (completion.surface_open_end) as the
   // preprocessing's own surface test has them.
@@ -602,7 +640,7 @@ CompletedLegSets CompleteLegSets(const std::vector<ScanPoint>& scan_points,
               Cluster c = CutLeg(scan_points, near, corner, radius);
               if (c.points.empty() && config.max_blend_m > 0.0) {
                 c = BlendedView(scan_points, corner, model.leg, config.corner_margin_m,
-                                config.max_blend_m, look.step_m);
+                                config.max_blend_m, blend_partner, look.step_m);
                 // Returns the search already took as a leg at their own range may be a
                 // neighbour's leg standing behind the corner on its bearing, not a blend: alone
                 // they complete nothing (eval-layouts --scenes-per-class 1000, seed0 1 / 20001 /

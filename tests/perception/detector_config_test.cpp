@@ -202,6 +202,8 @@ const RuleCase kCases[] = {
     {"completion_margin", "completion.corner_margin_m",
      [](auto& c) { c.completion.corner_margin_m = -0.01; }},
     {"max_blend", "completion.max_blend_m", [](auto& c) { c.completion.max_blend_m = -0.1; }},
+    {"blend_partner", "completion.blend_partner_max_m",
+     [](auto& c) { c.completion.blend_partner_max_m = -0.1; }},
     {"blended_err_sum", "completion.blended_max_err_sum_m",
      [](auto& c) { c.completion.blended_max_err_sum_m = 0.0; }},
     {"blended_confidence", "completion.blended_min_confidence",

@@ -33,6 +33,7 @@ TEST(EdgeBlendingTest, ACleanStepCountsAsAStep) {
   EXPECT_EQ(e.steps, 1);
   EXPECT_EQ(e.bridged, 0);
   EXPECT_DOUBLE_EQ(e.Share(), 0.0);
+  EXPECT_DOUBLE_EQ(e.widest_bridged_m, 0.0);
 }
 
 TEST(EdgeBlendingTest, OneReturnBetweenTheSurfacesBridgesTheStep) {
@@ -43,7 +44,18 @@ TEST(EdgeBlendingTest, OneReturnBetweenTheSurfacesBridgesTheStep) {
     EXPECT_EQ(e.steps, 0);
     EXPECT_EQ(e.bridged, 1);
     EXPECT_DOUBLE_EQ(e.Share(), 1.0);
+    EXPECT_DOUBLE_EQ(e.widest_bridged_m, 3.0);  // the surfaces' depth apart
   }
+}
+
+TEST(EdgeBlendingTest, KeepsTheWidestBridgedStep) {
+  // Two bridged steps, 1.2 m and 3 m deep, and a clean one of 4 m: the widest bridged is 3 m.
+  const auto e = EstimateEdgeBlending(
+      Returns(0, {2.0, 2.0, 2.0, 2.6, 3.2, 3.2, 3.2, 4.5, 6.2, 6.2, 6.2, 2.2, 2.2, 2.2}), kGap,
+      kFlat);
+  EXPECT_EQ(e.bridged, 2);
+  EXPECT_EQ(e.steps, 1);
+  EXPECT_NEAR(e.widest_bridged_m, 3.0, 1e-12);
 }
 
 TEST(EdgeBlendingTest, AReturnOnEitherSurfaceIsNoBridge) {

@@ -148,3 +148,25 @@ def test_a_noise_spike_on_an_edge_line_is_no_leg(gen, models, source_dir, tmp_pa
     assert rule["outcome"] == "right", rule
     assert rule["centre_err"] <= gen.MATCH_TOL
     assert without["outcome"] == "missed", without
+
+
+def test_a_blend_needs_something_to_blend_with(gen, models, source_dir, tmp_path):
+    """Scene 22 of against_wall, seed 1001: three round-legged 900x810 shelves in a row against
+    a wall, seen by a TiM571 at 20 mm noise, the target's back legs flush with the wall (not
+    findable). Completing two of the target's legs, the search blended a third shelf's leg 0.29 m
+    behind one corner and a wall piece 0.17 m behind the other into a 1075x883 standing 16 cm off
+    the target: a phantom. A pulsed receiver blends a leg only with what stands within a pulse's
+    length behind it, and the wall beside those returns stands 1.5 m behind the corners: with
+    completion.blend_partner_max_m (0.8 m) nothing is returned there; with it off (0) the phantom
+    is."""
+    shelfdock = pytest.importorskip("shelfdock")
+    config = (source_dir / "config" / "detector.yaml").read_text()
+    assert "  blend_partner_max_m: 0.8" in config
+    off = tmp_path / "any_blend.yaml"
+    off.write_text(config.replace("  blend_partner_max_m: 0.8", "  blend_partner_max_m: 0.0"))
+    sc = gen.generate_scene("against_wall", 1001, 22)
+    assert not sc["findable"] and sc["sensor"]["name"] == "tim571"
+    rule = gen.evaluate_scene(shelfdock.Detector(models=str(models)), sc)
+    without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
+    assert not rule["phantom"], rule
+    assert without["phantom"], without
