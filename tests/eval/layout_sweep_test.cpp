@@ -1147,5 +1147,21 @@ TEST(LayoutSceneTest, LegsBeforeAFarBackgroundShowTheBloom) {
                           off, VariantLayout("bloom"));
 }
 
+// A blend needs something to blend with (completion.blend_partner_max_m): returns more than
+// candidate_blend_far_max_m behind an empty corner count as the leg's blend only when something
+// stands within that reach behind the corner, as a pulsed receiver merges only echoes that close.
+// These two scenes (seed0 20001 and 200001, 1000 per class; targets with none or two of their legs
+// in sight, a TiM571 and a WLR-716 at 10 mm) returned a 1250 x 1250 11 and 23 cm off every shelf,
+// completed from returns deeper than that before a far background; with the rule, no phantom.
+TEST(LayoutSceneTest, ABlendNeedsSomethingToBlendWith) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  perception::DetectorConfig off;
+  off.completion.blend_partner_max_m = 0.0;
+  for (const std::uint64_t seed : {20997u, 200722u}) {
+    SCOPED_TRACE(seed);
+    ExpectPhantomOnlyWithout(models, OneScene(sim::LayoutClass::kOccludedLeg, seed), off);
+  }
+}
+
 }  // namespace
 }  // namespace shelfdock::eval
