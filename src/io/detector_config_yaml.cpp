@@ -106,6 +106,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("edge_corner_clearance_m", c.edge_corner_clearance_m);
   f.Read("edge_partner_m", c.edge_partner_m);
   f.Read("edge_lone_step_sigmas", c.edge_lone_step_sigmas);
+  f.Read("edge_lone_max_beams", c.edge_lone_max_beams);
   f.Read("hider_partner_m", c.hider_partner_m);
   f.Read("object_point_weight", c.object_point_weight);
   f.Read("object_point_spacing_m", c.object_point_spacing_m);

@@ -78,6 +78,7 @@ struct ScoreInputs {
   const std::optional<geometry::Pose2>& T_lidar_preset;
   const DetectorConfig& config;
   double range_noise_m;    // the scan's own (EstimateRangeNoise), or the configured one
+  double narrowest_leg_m;  // NarrowestLegSection of the models (GatherEvidence)
   bool completed = false;  // the sets were completed from two legs and the preset
 };
 
@@ -397,7 +398,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   constexpr double kCornerErrorShareOfRms = 0.5;
   ShelfEvidence ev = GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre,
                                     in.span_roles, in.angle_increment_rad, vouched, config.evidence,
-                                    kCornerErrorShareOfRms * fit->rms_m);
+                                    kCornerErrorShareOfRms * fit->rms_m, in.narrowest_leg_m);
   // A shelf the map vouches for may stand off its drawing by its build tolerance, and a leg placed
   // by one bloomed edge by that bloom (ConfidenceChiSquare); legs that only the scan vouches for
   // must match the drawing.
@@ -638,7 +639,8 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
                      angle_increment_rad,
                      T_lidar_preset,
                      config_,
-                     pre.range_noise_m > 0.0 ? pre.range_noise_m : config_.leg_fit.range_sigma_m};
+                     pre.range_noise_m > 0.0 ? pre.range_noise_m : config_.leg_fit.range_sigma_m,
+                     narrowest_leg_m_};
   // The shelf fitted to a hypothesis' legs' returns (FitShelfToReturns), made once.
   auto on_returns = [&](Hypothesis& h) -> const ShelfReturnFitResult& {
     if (!h.on_returns) {

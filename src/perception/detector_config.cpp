@@ -103,6 +103,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
   k.Check(e.edge_corner_clearance_m >= 0.0, "evidence.edge_corner_clearance_m", ">= 0");
   k.Check(e.edge_partner_m >= 0.0, "evidence.edge_partner_m", ">= 0");
   k.Check(e.edge_lone_step_sigmas >= 0.0, "evidence.edge_lone_step_sigmas", ">= 0 (0: any step)");
+  k.Check(e.edge_lone_max_beams >= 0.0, "evidence.edge_lone_max_beams", ">= 0 (0: any range)");
   k.Check(e.hider_partner_m >= 0.0, "evidence.hider_partner_m", ">= 0 (0: off)");
   k.Check(e.object_point_weight >= 0.0, "evidence.object_point_weight", ">= 0");
   k.Check(e.object_point_spacing_m >= 0.0, "evidence.object_point_spacing_m", ">= 0");

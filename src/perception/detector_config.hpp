@@ -180,6 +180,11 @@ struct EvidenceConfig {
                                           ///< the beams either side return from at least this
                                           ///< many times the range noise (x sqrt 2) behind it
                                           ///< (a noise spike on a wall is no leg); 0: any step
+  double edge_lone_max_beams = 2.0;       ///< [beams] ... and only where the thinnest model leg
+                                          ///< would span fewer beams than this at its range
+                                          ///< (nearer, a leg returns from two or more: one
+                                          ///< return is an outlier), unless the sensor blends
+                                          ///< every echo; 0: at any range
   double hider_partner_m = 0.4;           ///< [m] a leg-sized cluster inside this near what
                                           ///< hides one of the shelf's legs is the hider's other
                                           ///< part (a person's other leg): an object; 0: off

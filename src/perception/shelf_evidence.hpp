@@ -77,13 +77,15 @@ enum class SpanRole : char {
 /// count as kOther. `vouched`: the map vouches for a shelf there (a preset within its own error).
 /// `corner_error_m` [m]: how far off the pose may put a corner no candidate stands for (the
 /// detector passes half the legs' RMS off their fitted corners): beams through a missing leg's
-/// core prove it absent only where the corner is known that well.
+/// core prove it absent only where the corner is known that well. `narrowest_leg_m` [m]: the
+/// narrowest side of any model's leg (NarrowestLegSection), which says where one return can be a
+/// leg (EvidenceConfig::edge_lone_max_beams; 0: anywhere).
 ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              const geometry::ShelfModel& model,
                              const std::array<int, 4>& corner_candidate,
                              const PreprocessOutput& pre, const std::vector<SpanRole>& span_roles,
                              double angle_increment_rad, bool vouched, const EvidenceConfig& config,
-                             double corner_error_m = 0.0);
+                             double corner_error_m = 0.0, double narrowest_leg_m = 0.0);
 
 /// True when the leg candidate `c` may be a thinner leg seen only blended with what stands close
 /// behind it (one echo between the two, Eq. 1's mixed point with no clean return of the leg): at

@@ -232,6 +232,8 @@ const RuleCase kCases[] = {
     {"edge_partner", "evidence.edge_partner_m", [](auto& c) { c.evidence.edge_partner_m = -0.1; }},
     {"edge_lone_step", "evidence.edge_lone_step_sigmas",
      [](auto& c) { c.evidence.edge_lone_step_sigmas = -1.0; }},
+    {"edge_lone_beams", "evidence.edge_lone_max_beams",
+     [](auto& c) { c.evidence.edge_lone_max_beams = -1.0; }},
     {"hider_partner", "evidence.hider_partner_m",
      [](auto& c) { c.evidence.hider_partner_m = -0.1; }},
     {"map_error", "preset_gate.map_error_m", [](auto& c) { c.preset_gate.map_error_m = 0.0; }},

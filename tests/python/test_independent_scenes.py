@@ -170,3 +170,24 @@ def test_a_blend_needs_something_to_blend_with(gen, models, source_dir, tmp_path
     without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
     assert not rule["phantom"], rule
     assert without["phantom"], without
+
+
+def test_one_return_near_the_sensor_is_no_leg(gen, models, source_dir, tmp_path):
+    """Scene 1 of round_noisy, seed 2001: a round-legged 900x810 seen by a TiM571 at 20 mm
+    noise, one return 1.5 m away in mid-air (an outlier) on its edge line, where a 26 mm leg
+    spans three beams. A leg that near returns from two beams or more
+    (evidence.edge_lone_max_beams, 2): the return is no neighbour's leg and the shelf is returned
+    first, within 5 cm, its model. With the rule off (0) the outlier costs the shelf its
+    confidence and it is missed."""
+    shelfdock = pytest.importorskip("shelfdock")
+    config = (source_dir / "config" / "detector.yaml").read_text()
+    assert "  edge_lone_max_beams: 2.0" in config
+    off = tmp_path / "any_range.yaml"
+    off.write_text(config.replace("  edge_lone_max_beams: 2.0", "  edge_lone_max_beams: 0.0"))
+    sc = gen.generate_scene("round_noisy", 2001, 1)
+    assert sc["findable"] and sc["sensor"]["name"] == "tim571"
+    rule = gen.evaluate_scene(shelfdock.Detector(models=str(models)), sc)
+    without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
+    assert rule["outcome"] == "right", rule
+    assert rule["centre_err"] <= gen.MATCH_TOL
+    assert without["outcome"] == "missed", without
