@@ -128,6 +128,22 @@ def test_dump_all_writes_every_scene_with_its_outcome(gen, models, tmp_path):
         assert json.loads(t.read_text())["outcome"] == by_name[name]
 
 
+def _with_and_without(gen, models, source_dir, tmp_path, setting, off_value, scene):
+    """One independent scene (class, seed, index) scored by the default detector and by one with
+    config/detector.yaml's `setting` line ("  key: value", asserted there) set to `off_value`.
+    Returns the scene and the two records."""
+    shelfdock = pytest.importorskip("shelfdock")
+    config = (source_dir / "config" / "detector.yaml").read_text()
+    assert setting in config
+    key = setting.split(":")[0]
+    off = tmp_path / "off.yaml"
+    off.write_text(config.replace(setting, f"{key}: {off_value}"))
+    sc = gen.generate_scene(*scene)
+    rule = gen.evaluate_scene(shelfdock.Detector(models=str(models)), sc)
+    without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
+    return sc, rule, without
+
+
 def test_a_noise_spike_on_an_edge_line_is_no_leg(gen, models, source_dir, tmp_path):
     """Scene 19 of against_wall, seed 2001: a 1250x1250 against a wall, seen by a UST-10LX at
     20 mm noise. One wall return 9 cm (4.5 times the noise) nearer than its neighbours lies on
@@ -136,15 +152,10 @@ def test_a_noise_spike_on_an_edge_line_is_no_leg(gen, models, source_dir, tmp_pa
     noise (x sqrt 2) is the noise's tail, no leg: the shelf is returned first, within 5 cm, its
     model. With the rule off (0) the spike counts as a neighbour's leg under the shelf's edge and
     the shelf is missed."""
-    shelfdock = pytest.importorskip("shelfdock")
-    config = (source_dir / "config" / "detector.yaml").read_text()
-    assert "  edge_lone_step_sigmas: 5.0" in config
-    off = tmp_path / "any_step.yaml"
-    off.write_text(config.replace("  edge_lone_step_sigmas: 5.0", "  edge_lone_step_sigmas: 0.0"))
-    sc = gen.generate_scene("against_wall", 2001, 19)
+    sc, rule, without = _with_and_without(gen, models, source_dir, tmp_path,
+                                          "  edge_lone_step_sigmas: 5.0", "0.0",
+                                          ("against_wall", 2001, 19))
     assert sc["findable"] and sc["sensor"]["name"] == "ust10lx"
-    rule = gen.evaluate_scene(shelfdock.Detector(models=str(models)), sc)
-    without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
     assert rule["outcome"] == "right", rule
     assert rule["centre_err"] <= gen.MATCH_TOL
     assert without["outcome"] == "missed", without
@@ -159,15 +170,10 @@ def test_a_blend_needs_something_to_blend_with(gen, models, source_dir, tmp_path
     length behind it, and the wall beside those returns stands 1.5 m behind the corners: with
     completion.blend_partner_max_m (0.8 m) nothing is returned there; with it off (0) the phantom
     is."""
-    shelfdock = pytest.importorskip("shelfdock")
-    config = (source_dir / "config" / "detector.yaml").read_text()
-    assert "  blend_partner_max_m: 0.8" in config
-    off = tmp_path / "any_blend.yaml"
-    off.write_text(config.replace("  blend_partner_max_m: 0.8", "  blend_partner_max_m: 0.0"))
-    sc = gen.generate_scene("against_wall", 1001, 22)
+    sc, rule, without = _with_and_without(gen, models, source_dir, tmp_path,
+                                          "  blend_partner_max_m: 0.8", "0.0",
+                                          ("against_wall", 1001, 22))
     assert not sc["findable"] and sc["sensor"]["name"] == "tim571"
-    rule = gen.evaluate_scene(shelfdock.Detector(models=str(models)), sc)
-    without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
     assert not rule["phantom"], rule
     assert without["phantom"], without
 
@@ -179,15 +185,10 @@ def test_one_return_near_the_sensor_is_no_leg(gen, models, source_dir, tmp_path)
     (evidence.edge_lone_max_beams, 2): the return is no neighbour's leg and the shelf is returned
     first, within 5 cm, its model. With the rule off (0) the outlier costs the shelf its
     confidence and it is missed."""
-    shelfdock = pytest.importorskip("shelfdock")
-    config = (source_dir / "config" / "detector.yaml").read_text()
-    assert "  edge_lone_max_beams: 2.0" in config
-    off = tmp_path / "any_range.yaml"
-    off.write_text(config.replace("  edge_lone_max_beams: 2.0", "  edge_lone_max_beams: 0.0"))
-    sc = gen.generate_scene("round_noisy", 2001, 1)
+    sc, rule, without = _with_and_without(gen, models, source_dir, tmp_path,
+                                          "  edge_lone_max_beams: 2.0", "0.0",
+                                          ("round_noisy", 2001, 1))
     assert sc["findable"] and sc["sensor"]["name"] == "tim571"
-    rule = gen.evaluate_scene(shelfdock.Detector(models=str(models)), sc)
-    without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
     assert rule["outcome"] == "right", rule
     assert rule["centre_err"] <= gen.MATCH_TOL
     assert without["outcome"] == "missed", without
