@@ -209,6 +209,18 @@ void ExpectEachFoundOnlyWith(const std::vector<SceneId>& scenes,
   }
 }
 
+// ExpectPhantomOnlyWithout (the default detector against one with `off`) for each of `scenes`,
+// drawn on `layout`, with the paper's models.
+void ExpectEachPhantomOnlyWithout(const std::vector<SceneId>& scenes,
+                                  const perception::DetectorConfig& off,
+                                  const sim::LayoutConfig& layout = LayoutWithPresets()) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  for (const auto& [layout_class, seed] : scenes) {
+    SCOPED_TRACE(seed);
+    ExpectPhantomOnlyWithout(models, OneScene(layout_class, seed), off, layout);
+  }
+}
+
 TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
@@ -854,15 +866,15 @@ TEST(LayoutSceneTest, ANeighboursLegOnAPhantomsEdgeLineCountsAsInside) {
   off.evidence.edge_band_m = 0.0;
   off.completion.blended_candidate_max_returns = 0;
   off.leg_fit.mixed_edge_share = 0.0;
-  const std::pair<sim::LayoutClass, std::uint64_t> scenes[] = {
-      {sim::LayoutClass::kAgainstWall, 180414},     {sim::LayoutClass::kAgainstWall, 200902},
-      {sim::LayoutClass::kAisle, 180673},           {sim::LayoutClass::kMixedNeighbours, 220016},
-      {sim::LayoutClass::kMixedNeighbours, 240863}, {sim::LayoutClass::kRoundNoisy, 140054},
-      {sim::LayoutClass::kAgainstWall, 100689},     {sim::LayoutClass::kMixedNeighbours, 40308}};
-  for (const auto& [layout_class, seed] : scenes) {
-    SCOPED_TRACE(seed);
-    ExpectPhantomOnlyWithout(models, OneScene(layout_class, seed), off);
-  }
+  ExpectEachPhantomOnlyWithout({{sim::LayoutClass::kAgainstWall, 180414},
+                                {sim::LayoutClass::kAgainstWall, 200902},
+                                {sim::LayoutClass::kAisle, 180673},
+                                {sim::LayoutClass::kMixedNeighbours, 220016},
+                                {sim::LayoutClass::kMixedNeighbours, 240863},
+                                {sim::LayoutClass::kRoundNoisy, 140054},
+                                {sim::LayoutClass::kAgainstWall, 100689},
+                                {sim::LayoutClass::kMixedNeighbours, 40308}},
+                               off);
   {
     SCOPED_TRACE(120358);
     ExpectNoPhantom(models, OneScene(sim::LayoutClass::kRow, 120358));
@@ -1160,13 +1172,10 @@ TEST(LayoutSceneTest, LegsBeforeAFarBackgroundShowTheBloom) {
 // in sight, a TiM571 and a WLR-716 at 10 mm) returned a 1250 x 1250 11 and 23 cm off every shelf,
 // completed from returns deeper than that before a far background; with the rule, no phantom.
 TEST(LayoutSceneTest, ABlendNeedsSomethingToBlendWith) {
-  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   perception::DetectorConfig off;
   off.completion.blend_partner_max_m = 0.0;
-  for (const std::uint64_t seed : {20997u, 200722u}) {
-    SCOPED_TRACE(seed);
-    ExpectPhantomOnlyWithout(models, OneScene(sim::LayoutClass::kOccludedLeg, seed), off);
-  }
+  ExpectEachPhantomOnlyWithout(
+      {{sim::LayoutClass::kOccludedLeg, 20997}, {sim::LayoutClass::kOccludedLeg, 200722}}, off);
 }
 
 // One return counts as a neighbour's leg on a shelf's edge line only beyond the range where the
