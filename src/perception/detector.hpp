@@ -49,7 +49,8 @@ class Detector {
  private:
   std::vector<geometry::ShelfModel> models_;
   DetectorConfig config_;
-  double narrowest_leg_m_ = 0.0;  ///< [m] NarrowestLegSection(models_), for the bloom estimate
+  double narrowest_leg_m_ = 0.0;  ///< [m] NarrowestLegSection(models_): the bloom estimate, and
+                                  ///< where one return can be a leg (GatherEvidence)
 };
 
 /// Picks among the symmetric equivalents of `yaw_rad` (yaw + k period_rad; the model's
