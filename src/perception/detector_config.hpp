@@ -304,8 +304,8 @@ struct LegCompletionConfig {
   double blend_partner_max_m = 0.8;  ///< [m] ... those farther than candidate_blend_far_max_m
                                      ///< behind it only when something stands within this behind
                                      ///< the corner to blend with (wider where the scan bridges
-                                     ///< wider steps, any where its sensor blends every echo);
-                                     ///< 0: off
+                                     ///< wider steps twice, any where its sensor blends every
+                                     ///< echo); 0: off
   double blended_max_err_sum_m = 0.03;  ///< [m] a set with a blended leg: Eq. 2 err_sum bound
   double blended_min_confidence = 0.5;  ///< [-] and the confidence it must reach
   int min_measured_legs = 2;  ///< a set needs this many legs whose ranges the scan measured (not

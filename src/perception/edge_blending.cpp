@@ -28,7 +28,10 @@ EdgeBlendingEstimate EstimateEdgeBlending(const std::vector<ScanPoint>& points, 
     const double lo = std::min(a, b), hi = std::max(a, b);
     if (hi - lo >= min_gap_m && m > lo + flat_m && m < hi - flat_m) {
       ++out.bridged;
-      out.widest_bridged_m = std::max(out.widest_bridged_m, hi - lo);
+      const double depth = hi - lo;
+      out.widest_bridged_twice_m =
+          std::max(out.widest_bridged_twice_m, std::min(depth, out.widest_bridged_m));
+      out.widest_bridged_m = std::max(out.widest_bridged_m, depth);
     }
   }
   return out;

@@ -10,6 +10,9 @@ namespace shelfdock::perception {
 struct EdgeBlendingEstimate {
   int steps = 0;    ///< clean steps: two surfaces on neighbouring beams, nothing between them
   int bridged = 0;  ///< the same with one return between the two surfaces (a mixed point)
+  /// [m] the widest depth the scan shows bridged twice or more, the second widest of those (0:
+  /// fewer than two). One bridge alone may be an object standing between two surfaces.
+  double widest_bridged_twice_m = 0.0;
   double widest_bridged_m = 0.0;  ///< [m] the depth of the widest of those (0: none)
   /// The share of large depth steps the sensor bridges with a mixed point; 0 when none seen.
   double Share() const {

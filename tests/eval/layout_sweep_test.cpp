@@ -1178,6 +1178,26 @@ TEST(LayoutSceneTest, ABlendNeedsSomethingToBlendWith) {
       {{sim::LayoutClass::kOccludedLeg, 20997}, {sim::LayoutClass::kOccludedLeg, 200722}}, off);
 }
 
+// The blend partner's reach widens only to a depth step the scan shows bridged twice: one return
+// between two surfaces far apart may be a thin object standing there. These two scenes (a clutter
+// scene of seed0 5001 on config/lidar_variants/last_echo.yaml, a person_beside_leg scene of
+// seeds 1 on noise_growing.yaml, both at 20 mm), each with one wide bridge in its scan, returned a
+// phantom when one bridge widened the reach (a 1250 x 1250 in the clutter, a 900 x 810 15 cm
+// off a 1075 x 883); with the reach at the default, nothing more than 5 cm from a true shelf, and
+// with the rule off each phantom is back.
+TEST(LayoutSceneTest, OneBridgedStepDoesNotWidenTheBlendPartner) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  perception::DetectorConfig off;
+  off.completion.blend_partner_max_m = 0.0;
+  const std::tuple<sim::LayoutClass, std::uint64_t, std::string> scenes[] = {
+      {sim::LayoutClass::kClutter, 5834, "last_echo"},
+      {sim::LayoutClass::kPersonBesideLeg, 175, "noise_growing"}};
+  for (const auto& [layout_class, seed, lidar] : scenes) {
+    SCOPED_TRACE(seed);
+    ExpectPhantomOnlyWithout(models, OneScene(layout_class, seed), off, VariantLayout(lidar));
+  }
+}
+
 // One return counts as a neighbour's leg on a shelf's edge line only beyond the range where the
 // thinnest model leg spans evidence.edge_lone_max_beams (2) beams: nearer, a leg returns from two
 // beams or more, and one return in mid-air is a stray echo. These scenes of seeds 1 on

@@ -34,6 +34,7 @@ TEST(EdgeBlendingTest, ACleanStepCountsAsAStep) {
   EXPECT_EQ(e.bridged, 0);
   EXPECT_DOUBLE_EQ(e.Share(), 0.0);
   EXPECT_DOUBLE_EQ(e.widest_bridged_m, 0.0);
+  EXPECT_DOUBLE_EQ(e.widest_bridged_twice_m, 0.0);
 }
 
 TEST(EdgeBlendingTest, OneReturnBetweenTheSurfacesBridgesTheStep) {
@@ -44,18 +45,26 @@ TEST(EdgeBlendingTest, OneReturnBetweenTheSurfacesBridgesTheStep) {
     EXPECT_EQ(e.steps, 0);
     EXPECT_EQ(e.bridged, 1);
     EXPECT_DOUBLE_EQ(e.Share(), 1.0);
-    EXPECT_DOUBLE_EQ(e.widest_bridged_m, 3.0);  // the surfaces' depth apart
+    EXPECT_DOUBLE_EQ(e.widest_bridged_m, 3.0);        // the surfaces' depth apart
+    EXPECT_DOUBLE_EQ(e.widest_bridged_twice_m, 0.0);  // bridged once only
   }
 }
 
-TEST(EdgeBlendingTest, KeepsTheWidestBridgedStep) {
-  // Two bridged steps, 1.2 m and 3 m deep, and a clean one of 4 m: the widest bridged is 3 m.
-  const auto e = EstimateEdgeBlending(
-      Returns(0, {2.0, 2.0, 2.0, 2.6, 3.2, 3.2, 3.2, 4.5, 6.2, 6.2, 6.2, 2.2, 2.2, 2.2}), kGap,
-      kFlat);
+TEST(EdgeBlendingTest, KeepsTheWidestBridgedStepAndTheWidestBridgedTwice) {
+  // Two bridged steps, 1.2 m and 3 m deep, and a clean one of 4 m: the widest bridged is 3 m, the
+  // widest bridged twice 1.2 m (both steps are at least that deep).
+  std::vector<double> ranges{2.0, 2.0, 2.0, 2.6, 3.2, 3.2, 3.2, 4.5, 6.2, 6.2, 6.2, 2.2, 2.2, 2.2};
+  auto e = EstimateEdgeBlending(Returns(0, ranges), kGap, kFlat);
   EXPECT_EQ(e.bridged, 2);
   EXPECT_EQ(e.steps, 1);
   EXPECT_NEAR(e.widest_bridged_m, 3.0, 1e-12);
+  EXPECT_NEAR(e.widest_bridged_twice_m, 1.2, 1e-12);
+  // A third, 2 m deep: now two steps of 2 m or more.
+  for (const double r : {3.2, 4.2, 4.2, 4.2}) ranges.push_back(r);
+  e = EstimateEdgeBlending(Returns(0, ranges), kGap, kFlat);
+  EXPECT_EQ(e.bridged, 3);
+  EXPECT_NEAR(e.widest_bridged_m, 3.0, 1e-12);
+  EXPECT_NEAR(e.widest_bridged_twice_m, 2.0, 1e-9);
 }
 
 TEST(EdgeBlendingTest, AReturnOnEitherSurfaceIsNoBridge) {
