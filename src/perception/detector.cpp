@@ -396,9 +396,10 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   // the receiver variants of config/lidar_variants/, seeds 1 and seed0 5001: phantom scenes -6 /
   // -5 / -2 with none / half / all of it, right first under range_bias.yaml -3 / -1 / 0).
   constexpr double kCornerErrorShareOfRms = 0.5;
-  ShelfEvidence ev = GatherEvidence(fit->T_lidar_shelf, model, corner_candidate, in.pre,
-                                    in.span_roles, in.angle_increment_rad, vouched, config.evidence,
-                                    kCornerErrorShareOfRms * fit->rms_m, in.narrowest_leg_m);
+  ShelfEvidence ev =
+      GatherEvidence(fit->T_lidar_shelf, model, corner_candidate,
+                     {in.pre, in.span_roles, in.angle_increment_rad, in.narrowest_leg_m}, vouched,
+                     config.evidence, kCornerErrorShareOfRms * fit->rms_m);
   // A shelf the map vouches for may stand off its drawing by its build tolerance, and a leg placed
   // by one bloomed edge by that bloom (ConfidenceChiSquare); legs that only the scan vouches for
   // must match the drawing.

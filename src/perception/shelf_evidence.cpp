@@ -384,20 +384,20 @@ LegWidth MeasureLegWidth(const Cluster& c, const Eigen::Vector2d& centre,
 // 1), 3 / 14 more on bloom.yaml (seeds 1 / seed0 5001), every other count of the default and
 // variant sensors the same, that clutter sample's detections too. 0 with fewer than two closed
 // outlines.
-// Where two or more closed legs have their background more than `far_step_m` behind both sides
-// (evidence.width_bloom_far_legs, blend_max_step_m), only those count: a wide spot's edge beams,
-// partly on the leg, return the leg's range when the background stands far behind, but blend with
-// one close behind into one echo between the two, which the leg's cluster loses (Eq. 1,
-// MayBeBlend): such a leg shows little of the bloom, and as the least of three it hid the others'
-// (independent generator, against_wall 198 of seed 1001: a 26 mm round leg 0.1 m before the wall 6
-// mm too wide, the two others with 0.9-1.1 m behind them 24 and 33 mm). Independent seeds 1 / 1001
-// / 2001 / 3001 / 4001 +1 / +2 / 0 / +2 / +1 right first, x1.5 / x2 +1 / +2, `bloom.yaml` seeds 1 /
-// seed0 5001 +4 / +11; every other sample, clutter and the 100000 scenes identical, no phantom
-// added.
+// Given `far_step_m` (evidence.width_bloom_far_legs: blend_max_step_m; nullopt: every closed leg
+// counts), where two or more closed legs have their background more than that behind both sides,
+// only those count: a wide spot's edge beams, partly on the leg, return the leg's range when the
+// background stands far behind, but blend with one close behind into one echo between the two,
+// which the leg's cluster loses (Eq. 1, MayBeBlend): such a leg shows little of the bloom, and as
+// the least of three it hid the others' (independent generator, against_wall 198 of seed 1001: a
+// 26 mm round leg 0.1 m before the wall 6 mm too wide, the two others with 0.9-1.1 m behind them
+// 24 and 33 mm). Independent seeds 1 / 1001 / 2001 / 3001 / 4001 +1 / +2 / 0 / +2 / +1 right
+// first, x1.5 / x2 +1 / +2, `bloom.yaml` seeds 1 / seed0 5001 +4 / +11; every other sample,
+// clutter and the 100000 scenes identical, no phantom added.
 double OwnLegsBloom(const std::array<std::optional<LegWidth>, 4>& widths,
-                    double three_legs_margin_rad, double far_step_m) {
+                    double three_legs_margin_rad, std::optional<double> far_step_m) {
   auto before_far_background = [&](const LegWidth& w) {
-    return w.closed && w.background_step_m > far_step_m;
+    return far_step_m && w.closed && w.background_step_m > *far_step_m;
   };
   const bool far_only = std::count_if(widths.begin(), widths.end(), [&](const auto& w) {
                           return w && before_far_background(*w);
@@ -433,13 +433,12 @@ double LegSilhouetteAngle(const geometry::LegModel& leg, double leg_yaw,
 
 ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              const geometry::ShelfModel& model,
-                             const std::array<int, 4>& corner_candidate,
-                             const PreprocessOutput& pre, const std::vector<SpanRole>& span_roles,
-                             double angle_increment_rad, bool vouched, const EvidenceConfig& config,
-                             double corner_error_m, double narrowest_leg_m) {
+                             const std::array<int, 4>& corner_candidate, const EvidenceScan& scan,
+                             bool vouched, const EvidenceConfig& config, double corner_error_m) {
+  const PreprocessOutput& pre = scan.pre;
   ShelfEvidence ev;
   ev.vouched = vouched;
-  const double alpha = std::abs(angle_increment_rad);
+  const double alpha = std::abs(scan.angle_increment_rad);
   // The bloom (the scan's, and its own legs' common bloom, OwnLegsBloom, up to
   // width_bloom_max_rad) is granted only where the map vouches for a shelf: a robot searching
   // without one (and a scan of a room with no shelf in it) keeps the strict widths, which tell
@@ -453,8 +452,8 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   }
   double bloom = vouched ? pre.width_bloom_rad : 0.0;
   if (vouched && config.width_bloom_own_legs) {
-    const double far_step = config.width_bloom_far_legs ? config.blend_max_step_m
-                                                        : std::numeric_limits<double>::infinity();
+    const std::optional<double> far_step =
+        config.width_bloom_far_legs ? std::optional<double>(config.blend_max_step_m) : std::nullopt;
     const double own = OwnLegsBloom(widths, config.width_bloom_three_legs_beams * alpha, far_step);
     bloom = std::max(bloom, std::min(own, config.width_bloom_max_rad));
   }
@@ -599,7 +598,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
   const double lone_min_step = config.edge_lone_step_sigmas * std::sqrt(2.0) * pre.range_noise_m;
   const double lone_min_range =
       config.edge_lone_max_beams > 0.0 && alpha > 0.0 && !pre.blends_every_echo
-          ? narrowest_leg_m / (config.edge_lone_max_beams * alpha)
+          ? scan.narrowest_leg_m / (config.edge_lone_max_beams * alpha)
           : 0.0;
   std::vector<ForeignLeg> partners;  // foreign legs beside a hider (below)
   int interior_spans = 0;            // clusters with returns inside
@@ -626,7 +625,7 @@ ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
     }
     ev.interior_points += inside;
     interior_spans += inside > 0;
-    const SpanRole role = s < span_roles.size() ? span_roles[s] : SpanRole::kOther;
+    const SpanRole role = s < scan.span_roles.size() ? scan.span_roles[s] : SpanRole::kOther;
     const Eigen::Vector2d c = R * span.centroid + t;
     // On an edge line only a whole leg counts: two returns or more, or one return with a depth
     // step behind it on both sides (ClosedLoneReturn). The sliver of an occluder cut by something

@@ -69,23 +69,30 @@ enum class SpanRole : char {
                      ///< an object like any other, on its edge line a leg (OnEdgeLine)
 };
 
+/// The scan as GatherEvidence reads it, the same for every hypothesis of one detection.
+struct EvidenceScan {
+  const PreprocessOutput& pre;  ///< Preprocess on the scan (its points in beam order)
+  /// Per cluster (pre.spans): which belong to some leg set of the search (legs of some
+  /// shelf-shaped group): inside a footprint they are the phantom's signature; spans past its end
+  /// count as kOther.
+  const std::vector<SpanRole>& span_roles;
+  double angle_increment_rad = 0.0;  ///< [rad] the scan's beam spacing
+  /// [m] the narrowest side of any model's leg (NarrowestLegSection), which says where one return
+  /// can be a leg (EvidenceConfig::edge_lone_max_beams; 0: anywhere).
+  double narrowest_leg_m = 0.0;
+};
+
 /// Gathers the evidence for a shelf at `T_lidar_shelf` of `model` whose model corner k is the
-/// leg candidate `corner_candidate[k]` (index into pre.candidates, -1 when no cluster).
-/// `pre` must come from Preprocess on the same scan (its points are in beam order).
-/// `span_roles[s]` tells which clusters belong to some leg set of the search (legs of some
-/// shelf-shaped group): inside a footprint they are the phantom's signature; spans past its end
-/// count as kOther. `vouched`: the map vouches for a shelf there (a preset within its own error).
+/// leg candidate `corner_candidate[k]` (index into scan.pre.candidates, -1 when no cluster).
+/// `vouched`: the map vouches for a shelf there (a preset within its own error).
 /// `corner_error_m` [m]: how far off the pose may put a corner no candidate stands for (the
 /// detector passes half the legs' RMS off their fitted corners): beams through a missing leg's
-/// core prove it absent only where the corner is known that well. `narrowest_leg_m` [m]: the
-/// narrowest side of any model's leg (NarrowestLegSection), which says where one return can be a
-/// leg (EvidenceConfig::edge_lone_max_beams; 0: anywhere).
+/// core prove it absent only where the corner is known that well.
 ShelfEvidence GatherEvidence(const geometry::Pose2& T_lidar_shelf,
                              const geometry::ShelfModel& model,
-                             const std::array<int, 4>& corner_candidate,
-                             const PreprocessOutput& pre, const std::vector<SpanRole>& span_roles,
-                             double angle_increment_rad, bool vouched, const EvidenceConfig& config,
-                             double corner_error_m = 0.0, double narrowest_leg_m = 0.0);
+                             const std::array<int, 4>& corner_candidate, const EvidenceScan& scan,
+                             bool vouched, const EvidenceConfig& config,
+                             double corner_error_m = 0.0);
 
 /// True when the leg candidate `c` may be a thinner leg seen only blended with what stands close
 /// behind it (one echo between the two, Eq. 1's mixed point with no clean return of the leg): at

@@ -174,7 +174,7 @@ TEST(ShelfEvidenceTest, TheCoreAllowsForTheCornersError) {
   auto view = [&](double corner_error_m, bool rule) {
     EvidenceConfig config;
     config.present_in_core = rule;
-    return GatherEvidence(T_lidar_shelf, model, {-1, -1, -1, -1}, pre, {}, testing::kWlrAlpha,
+    return GatherEvidence(T_lidar_shelf, model, {-1, -1, -1, -1}, {pre, {}, testing::kWlrAlpha},
                           false, config, corner_error_m)
         .legs[0];
   };
@@ -430,7 +430,7 @@ TEST(ShelfEvidenceTest, ALegOpenOnOneSideIsOnlyALowerBoundOnItsWidth) {
       leg.edges.after_rad = leg.points.back().angle + 0.5 * alpha;
       pre.candidates.push_back(leg);
     }
-    return GatherEvidence(T_lidar_shelf, model, {0, 1, 2, -1}, pre, {}, alpha, false, config);
+    return GatherEvidence(T_lidar_shelf, model, {0, 1, 2, -1}, {pre, {}, alpha}, false, config);
   };
   const ShelfEvidence open = evidence(true);
   const ShelfEvidence closed = evidence(false);
@@ -630,7 +630,7 @@ TEST(ShelfEvidenceTest, ASliverItsOwnLegPartlyHidesInsideAVouchedShelfIsNoForeig
   auto evidence = [&](SpanRole role, bool vouched, bool own) {
     const std::array<int, 4> corners =
         own ? std::array<int, 4>{-1, -1, -1, 0} : std::array<int, 4>{-1, -1, -1, -1};
-    return GatherEvidence(T_lidar_shelf, model, corners, pre, {role, SpanRole::kLeg}, alpha,
+    return GatherEvidence(T_lidar_shelf, model, corners, {pre, {role, SpanRole::kLeg}, alpha},
                           vouched, config);
   };
   for (const bool vouched : {false, true}) {
@@ -698,7 +698,7 @@ TEST(ShelfEvidenceTest, AnObjectsPointsCountTheSurfaceTheyCover) {
     pre.spans.push_back(span);
     EvidenceConfig config;
     config.object_point_spacing_m = spacing_m;
-    return GatherEvidence(T_lidar_shelf, model, {-1, -1, -1, -1}, pre, {}, alpha, false, config);
+    return GatherEvidence(T_lidar_shelf, model, {-1, -1, -1, -1}, {pre, {}, alpha}, false, config);
   };
   const double spacing = EvidenceConfig{}.object_point_spacing_m;
   const ShelfEvidence near = evidence(0.6, 30, spacing);
@@ -771,8 +771,8 @@ class HiddenBackLeftLeg {
     roles_.push_back(role);
   }
   ShelfEvidence Evidence(const EvidenceConfig& config, bool vouched = true) const {
-    return GatherEvidence(T_lidar_shelf_, model_, corner_candidate_, pre_, roles_,
-                          testing::kWlrAlpha, vouched, config);
+    return GatherEvidence(T_lidar_shelf_, model_, corner_candidate_,
+                          {pre_, roles_, testing::kWlrAlpha}, vouched, config);
   }
 
  private:
