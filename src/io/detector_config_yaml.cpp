@@ -116,6 +116,7 @@ void ReadEvidence(YamlFields f, perception::EvidenceConfig& c) {
   f.Read("leg_width_bias_slack_m", c.leg_width_bias_slack_m);
   f.Read("leg_width_blur_beams", c.leg_width_blur_beams);
   f.Read("leg_width_blend_beams", c.leg_width_blend_beams);
+  f.Read("leg_width_skip_blended", c.leg_width_skip_blended);
   f.Read("leg_width_scale_m", c.leg_width_scale_m);
   f.Read("width_bloom_max_rad", c.width_bloom_max_rad);
   f.Read("width_bloom_quantile", c.width_bloom_quantile);

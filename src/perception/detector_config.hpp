@@ -213,6 +213,10 @@ struct EvidenceConfig {
                                           ///< sensor blends every echo (its legs' edge beams
                                           ///< return blends: PreprocessOutput::
                                           ///< blends_every_echo); 0: off
+  bool leg_width_skip_blended = true;     ///< the one leg of a shelf seen only blended with its
+                                          ///< background (completed: its bearing, not its
+                                          ///< width) does not count in the legs' mean width
+                                          ///< where it looks too narrow; false: it counts
   double leg_width_scale_m = 0.01;        ///< [m] leg width error beyond the slack that halves it
   /// A scanner that blooms (EstimateWidthBloom: every thin object drawn wider by its spot) may
   /// show legs, and foreign legs, too wide by the scan's estimated bloom times their range.

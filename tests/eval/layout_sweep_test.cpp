@@ -1198,6 +1198,19 @@ TEST(LayoutSceneTest, OneBridgedStepDoesNotWidenTheBlendPartner) {
   }
 }
 
+// A leg seen only blended with its background (completed from two legs and the preset) gives its
+// bearing, not its width (evidence.leg_width_skip_blended): these scenes of seed0 5001 (TiM571,
+// a shelf against a wall and two beside a person, each completed with one such leg) are right
+// first within 5 cm with it, and missed with the blended leg's width in the legs' mean.
+TEST(LayoutSceneTest, ABlendedLegsWidthIsNotMeasured) {
+  perception::DetectorConfig off;
+  off.evidence.leg_width_skip_blended = false;
+  ExpectEachFoundOnlyWith({{sim::LayoutClass::kAgainstWall, 5764},
+                           {sim::LayoutClass::kPersonBesideLeg, 5257},
+                           {sim::LayoutClass::kPersonBesideLeg, 5296}},
+                          off, LayoutWithPresets());
+}
+
 // One return counts as a neighbour's leg on a shelf's edge line only beyond the range where the
 // thinnest model leg spans evidence.edge_lone_max_beams (2) beams: nearer, a leg returns from two
 // beams or more, and one return in mid-air is a stray echo. These scenes of seeds 1 on

@@ -766,6 +766,28 @@ class HiddenBackLeftLeg {
     corner_candidate_[static_cast<std::size_t>(k)] = static_cast<int>(pre_.candidates.size());
     pre_.candidates.push_back(leg);
   }
+  // The same with `returns` returns, its outline closed by a far background on both sides (its
+  // width counts in the legs' mean), seen only blended with that background when `blended` (as
+  // CompleteLegSets marks such a leg: on its bearing, at the range the pose puts it).
+  void AddClosedLeg(int k, int returns, bool blended) {
+    const Eigen::Vector2d c = Corner(k);
+    Add(c - 0.02 * c.normalized(), SpanRole::kLeg, returns);
+    const ClusterSpan& span = pre_.spans.back();
+    Cluster leg;
+    leg.points.assign(pre_.points.begin() + static_cast<std::ptrdiff_t>(span.begin),
+                      pre_.points.begin() + static_cast<std::ptrdiff_t>(span.end));
+    leg.centroid = span.centroid;
+    leg.span = static_cast<int>(pre_.spans.size()) - 1;
+    const double half_beam = 0.5 * testing::kWlrAlpha;
+    leg.edges.before_rad =
+        std::atan2(leg.points.front().p.y(), leg.points.front().p.x()) - half_beam;
+    leg.edges.after_rad = std::atan2(leg.points.back().p.y(), leg.points.back().p.x()) + half_beam;
+    leg.edges.before_step_m = 2.0;
+    leg.edges.after_step_m = 2.0;
+    if (blended) leg.assumed_range_m = c.norm();
+    corner_candidate_[static_cast<std::size_t>(k)] = static_cast<int>(pre_.candidates.size());
+    pre_.candidates.push_back(leg);
+  }
   void Add(const Eigen::Vector2d& centre, SpanRole role, int returns = 3) {
     AddSpan(pre_, centre, returns);
     roles_.push_back(role);
@@ -782,6 +804,37 @@ class HiddenBackLeftLeg {
   std::vector<SpanRole> roles_;
   std::array<int, 4> corner_candidate_{-1, -1, -1, -1};
 };
+
+// The legs' mean width leaves out the one leg of a shelf seen only blended with its background
+// where it looks too narrow (evidence.leg_width_skip_blended): its returns, here one, give its
+// bearing, not its width. Too wide (a wide spot's bloom) it stays in, and with two such legs both
+// stay in: the mean would rest on one measured leg.
+TEST(ShelfEvidenceTest, TheOneBlendedLegsWidthLeavesTheMean) {
+  // Legs 0 and 1 with three returns each, leg 3 (when `third_returns` > 0: with that many)
+  // blended or not.
+  auto bias = [](int blended_legs, bool skip, int third_returns = 1) {
+    HiddenBackLeftLeg scene;
+    scene.AddClosedLeg(0, 3, false);
+    scene.AddClosedLeg(1, 3, blended_legs >= 2);
+    if (third_returns > 0) scene.AddClosedLeg(3, third_returns, blended_legs >= 1);
+    EvidenceConfig config;
+    config.leg_width_skip_blended = skip;
+    return scene.Evidence(config).leg_width_bias_m;
+  };
+  // One blended leg: with the rule the mean is the two measured legs' alone; without it the
+  // one-return leg, two beams narrower than the others, pulls it down by more than half a beam.
+  const double beam = 2.5 * testing::kWlrAlpha;  // [m] at the front legs
+  EXPECT_NEAR(bias(1, true), bias(0, true, 0), 1e-12);
+  EXPECT_LT(bias(1, false), bias(1, true) - 0.5 * beam);
+  // Not blended, the one-return leg counts.
+  EXPECT_DOUBLE_EQ(bias(0, true), bias(0, false));
+  EXPECT_LT(bias(0, true), bias(1, true) - 0.5 * beam);
+  // Blended but wider than the model's leg (five returns): it counts.
+  EXPECT_DOUBLE_EQ(bias(1, true, 5), bias(1, false, 5));
+  EXPECT_GT(bias(1, true, 5), bias(0, true, 0) + 0.25 * beam);
+  // Two blended legs: both stay in either way.
+  EXPECT_DOUBLE_EQ(bias(2, true), bias(2, false));
+}
 
 // The shelf's back-left leg hidden by something under the shelf: one object 0.3 m in front of the
 // leg on its line of sight (excused: it explains the hidden leg) and, 0.2 m beside it and inside
