@@ -221,6 +221,18 @@ void ExpectEachPhantomOnlyWithout(const std::vector<SceneId>& scenes,
   }
 }
 
+// ExpectPhantomOnlyWithout (the default detector against one with `off`) for each of `scenes`,
+// each drawn on its receiver variant (VariantLayout), with the paper's models.
+using VariantSceneId = std::tuple<sim::LayoutClass, std::uint64_t, std::string>;
+void ExpectEachPhantomOnlyWithoutOnVariants(const std::vector<VariantSceneId>& scenes,
+                                            const perception::DetectorConfig& off) {
+  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
+  for (const auto& [layout_class, seed, lidar] : scenes) {
+    SCOPED_TRACE(seed);
+    ExpectPhantomOnlyWithout(models, OneScene(layout_class, seed), off, VariantLayout(lidar));
+  }
+}
+
 TEST(LayoutSweepTest, DISABLED_IssueTargetsOnGeneratedWarehouseScenes) {
   const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   const sim::LayoutConfig layout = LayoutWithPresets();
@@ -800,17 +812,12 @@ TEST(LayoutSceneTest, ALegWithAPersonAgainstItStandsOutFromThePerson) {
 // returns a phantom (a 1080 x 856 on two of the target's legs and the wall, a 1250 x 1250 on a
 // row's legs, a 900 x 810 in the clutter).
 TEST(LayoutSceneTest, AFlushLegsFreeEdgeShowsTheBackground) {
-  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   perception::DetectorConfig off;
   off.completion.flush_edge_background = false;
-  const std::tuple<sim::LayoutClass, std::uint64_t, std::string> scenes[] = {
-      {sim::LayoutClass::kAgainstWall, 135, "dropouts"},
-      {sim::LayoutClass::kRoundNoisy, 5189, "bloom"},
-      {sim::LayoutClass::kClutter, 5224, "dropouts"}};
-  for (const auto& [layout_class, seed, lidar] : scenes) {
-    SCOPED_TRACE(seed);
-    ExpectPhantomOnlyWithout(models, OneScene(layout_class, seed), off, VariantLayout(lidar));
-  }
+  ExpectEachPhantomOnlyWithoutOnVariants({{sim::LayoutClass::kAgainstWall, 135, "dropouts"},
+                                          {sim::LayoutClass::kRoundNoisy, 5189, "bloom"},
+                                          {sim::LayoutClass::kClutter, 5224, "dropouts"}},
+                                         off);
 }
 
 // eval-layouts' person_beside_leg scene 5272 on config/lidar_variants/noise_growing.yaml (10 mm
@@ -1186,16 +1193,12 @@ TEST(LayoutSceneTest, ABlendNeedsSomethingToBlendWith) {
 // off a 1075 x 883); with the reach at the default, nothing more than 5 cm from a true shelf, and
 // with the rule off each phantom is back.
 TEST(LayoutSceneTest, OneBridgedStepDoesNotWidenTheBlendPartner) {
-  const auto models = io::ReadShelfModels(kRoot + "/config/models.yaml");
   perception::DetectorConfig off;
   off.completion.blend_partner_max_m = 0.0;
-  const std::tuple<sim::LayoutClass, std::uint64_t, std::string> scenes[] = {
-      {sim::LayoutClass::kClutter, 5834, "last_echo"},
-      {sim::LayoutClass::kPersonBesideLeg, 175, "noise_growing"}};
-  for (const auto& [layout_class, seed, lidar] : scenes) {
-    SCOPED_TRACE(seed);
-    ExpectPhantomOnlyWithout(models, OneScene(layout_class, seed), off, VariantLayout(lidar));
-  }
+  ExpectEachPhantomOnlyWithoutOnVariants(
+      {{sim::LayoutClass::kClutter, 5834, "last_echo"},
+       {sim::LayoutClass::kPersonBesideLeg, 175, "noise_growing"}},
+      off);
 }
 
 // A leg seen only blended with its background (completed from two legs and the preset) gives its

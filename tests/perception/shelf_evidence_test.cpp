@@ -753,23 +753,9 @@ class HiddenBackLeftLeg {
   Eigen::Vector2d Corner(int k) const {
     return T_lidar_shelf_ * model_.LegCentres()[static_cast<std::size_t>(k)];
   }
-  // The shelf's own leg at corner k (0, 1 or 3).
-  void AddLeg(int k) {
-    const Eigen::Vector2d c = Corner(k);
-    Add(c - 0.02 * c.normalized(), SpanRole::kLeg);
-    const ClusterSpan& span = pre_.spans.back();
-    Cluster leg;
-    leg.points.assign(pre_.points.begin() + static_cast<std::ptrdiff_t>(span.begin),
-                      pre_.points.begin() + static_cast<std::ptrdiff_t>(span.end));
-    leg.centroid = span.centroid;
-    leg.span = static_cast<int>(pre_.spans.size()) - 1;
-    corner_candidate_[static_cast<std::size_t>(k)] = static_cast<int>(pre_.candidates.size());
-    pre_.candidates.push_back(leg);
-  }
-  // The same with `returns` returns, its outline closed by a far background on both sides (its
-  // width counts in the legs' mean), seen only blended with that background when `blended` (as
-  // CompleteLegSets marks such a leg: on its bearing, at the range the pose puts it).
-  void AddClosedLeg(int k, int returns, bool blended) {
+  // The shelf's own leg at corner k (0, 1 or 3), with `returns` returns; the candidate for
+  // further settings.
+  Cluster& AddLeg(int k, int returns = 3) {
     const Eigen::Vector2d c = Corner(k);
     Add(c - 0.02 * c.normalized(), SpanRole::kLeg, returns);
     const ClusterSpan& span = pre_.spans.back();
@@ -778,15 +764,22 @@ class HiddenBackLeftLeg {
                       pre_.points.begin() + static_cast<std::ptrdiff_t>(span.end));
     leg.centroid = span.centroid;
     leg.span = static_cast<int>(pre_.spans.size()) - 1;
+    corner_candidate_[static_cast<std::size_t>(k)] = static_cast<int>(pre_.candidates.size());
+    pre_.candidates.push_back(leg);
+    return pre_.candidates.back();
+  }
+  // The same, its outline closed by a far background on both sides (its width counts in the legs'
+  // mean), seen only blended with that background when `blended` (as CompleteLegSets marks such a
+  // leg: on its bearing, at the range the pose puts it).
+  void AddClosedLeg(int k, int returns, bool blended) {
+    Cluster& leg = AddLeg(k, returns);
     const double half_beam = 0.5 * testing::kWlrAlpha;
     leg.edges.before_rad =
         std::atan2(leg.points.front().p.y(), leg.points.front().p.x()) - half_beam;
     leg.edges.after_rad = std::atan2(leg.points.back().p.y(), leg.points.back().p.x()) + half_beam;
     leg.edges.before_step_m = 2.0;
     leg.edges.after_step_m = 2.0;
-    if (blended) leg.assumed_range_m = c.norm();
-    corner_candidate_[static_cast<std::size_t>(k)] = static_cast<int>(pre_.candidates.size());
-    pre_.candidates.push_back(leg);
+    if (blended) leg.assumed_range_m = Corner(k).norm();
   }
   void Add(const Eigen::Vector2d& centre, SpanRole role, int returns = 3) {
     AddSpan(pre_, centre, returns);
