@@ -144,6 +144,15 @@ def _with_and_without(gen, models, source_dir, tmp_path, setting, off_value, sce
     return sc, rule, without
 
 
+def _assert_found_only_with_rule(gen, sc, rule, without, sensor):
+    """The findable scene, seen by `sensor`, is right first within the match tolerance with the
+    rule (`rule`) and missed with it off (`without`), as _with_and_without returns them."""
+    assert sc["findable"] and sc["sensor"]["name"] == sensor
+    assert rule["outcome"] == "right", rule
+    assert rule["centre_err"] <= gen.MATCH_TOL
+    assert without["outcome"] == "missed", without
+
+
 def test_a_noise_spike_on_an_edge_line_is_no_leg(gen, models, source_dir, tmp_path):
     """Scene 19 of against_wall, seed 2001: a 1250x1250 against a wall, seen by a UST-10LX at
     20 mm noise. One wall return 9 cm (4.5 times the noise) nearer than its neighbours lies on
@@ -155,10 +164,7 @@ def test_a_noise_spike_on_an_edge_line_is_no_leg(gen, models, source_dir, tmp_pa
     sc, rule, without = _with_and_without(gen, models, source_dir, tmp_path,
                                           "  edge_lone_step_sigmas: 5.0", "0.0",
                                           ("against_wall", 2001, 19))
-    assert sc["findable"] and sc["sensor"]["name"] == "ust10lx"
-    assert rule["outcome"] == "right", rule
-    assert rule["centre_err"] <= gen.MATCH_TOL
-    assert without["outcome"] == "missed", without
+    _assert_found_only_with_rule(gen, sc, rule, without, "ust10lx")
 
 
 def test_a_blend_needs_something_to_blend_with(gen, models, source_dir, tmp_path):
@@ -188,7 +194,4 @@ def test_one_return_near_the_sensor_is_no_leg(gen, models, source_dir, tmp_path)
     sc, rule, without = _with_and_without(gen, models, source_dir, tmp_path,
                                           "  edge_lone_max_beams: 2.0", "0.0",
                                           ("round_noisy", 2001, 1))
-    assert sc["findable"] and sc["sensor"]["name"] == "tim571"
-    assert rule["outcome"] == "right", rule
-    assert rule["centre_err"] <= gen.MATCH_TOL
-    assert without["outcome"] == "missed", without
+    _assert_found_only_with_rule(gen, sc, rule, without, "tim571")
