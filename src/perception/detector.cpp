@@ -30,13 +30,14 @@ struct Hypothesis {
   HypothesisRecord record;                      // what was found out about it
   LegSet set;                                   // leg candidates it is made of
   const geometry::ShelfModel* model = nullptr;  // the model it was scored against
-  // Kept for the fits on the legs' returns (FitShelfToReturns), made only when a choice between
-  // models or the returned pose needs them.
-  std::array<Eigen::Vector2d, 4> legs{};   // fitted leg centres
-  std::array<LegFitResult, 4> leg_fits{};  // their fits (none for a blended leg)
-  std::array<int, 4> corner_of_leg{-1, -1, -1, -1};
-  geometry::Pose2 T_legs;  // RefineShelfPose's on the fitted legs
-  double legs_chi2 = 0.0;  // its chi-square
+  // Set as soon as its legs fit the model (FitShelf), for the confidence's chi-square
+  // (ConfidenceChiSquare) and the fits on the legs' returns (FitShelfToReturns), made only when a
+  // choice between models or the returned pose needs them.
+  std::array<Eigen::Vector2d, 4> legs{};             // fitted leg centres
+  std::array<LegFitResult, 4> leg_fits{};            // their fits (none for a blended leg)
+  std::array<int, 4> corner_of_leg{-1, -1, -1, -1};  // the model's corner each leg stands at
+  geometry::Pose2 T_legs;                            // RefineShelfPose's on the fitted legs
+  double legs_chi2 = 0.0;                            // its chi-square
   std::optional<ShelfReturnFitResult> on_returns;
   int corners_present = 0;  // corners without a leg cluster where returns stand at the leg's range
   // Passed every check but kHiddenLegNoPreset: it competes for its legs and is never returned.
@@ -215,51 +216,50 @@ bool BeamsSpanAtLeast(const std::array<Eigen::Vector2d, 4>& legs, int count, dou
 // legs of three whose fourth corner nothing accounts for (neither seen nor hidden): their fit to
 // the drawing is then all that tells them from legs of different shelves (an against_wall scene
 // under blend_1p5m.yaml: two shelves' legs and a lone return made a 1075 x 883 at 0.30 with it).
-double ConfidenceChiSquare(const std::array<Eigen::Vector2d, 4>& legs, const LegSet& set,
-                           const geometry::ShelfModel& model, const ShelfFitResult& fit,
-                           const ShelfRefineResult& refined,
-                           const std::array<LegFitResult, 4>& leg_fits, const ShelfEvidence& ev,
-                           std::array<LegSigma, 4> sigma, const ScoreInputs& in) {
+double ConfidenceChiSquare(const Hypothesis& h, const ShelfRefineResult& refined,
+                           const ShelfEvidence& ev, std::array<LegSigma, 4> sigma,
+                           const ScoreInputs& in) {
+  const std::array<Eigen::Vector2d, 4>& legs = h.legs;
+  const int count = h.set.count;
   const double build = in.config.evidence.build_sigma_m;
   const double bias = in.config.evidence.range_bias_sigma_m;
   const bool corners_accounted = ev.legs_seen + ev.legs_occluded == 4;
   const double edge_bloom =
       corners_accounted ? in.config.evidence.width_bloom_edge_share * ev.width_bloom_rad : 0.0;
   if (build <= 0.0 && bias <= 0.0 && edge_bloom <= 0.0) return refined.chi2;
-  for (int i = 0; i < set.count; ++i) {
-    const bool one_edge = leg_fits[i].silhouette.edge_side != 0;
+  for (int i = 0; i < count; ++i) {
+    const bool one_edge = h.leg_fits[i].silhouette.edge_side != 0;
     const double bloom_m = one_edge ? edge_bloom * legs[i].norm() : 0.0;
     sigma[i].along_m = std::hypot(sigma[i].along_m, build);
     sigma[i].across_m = std::hypot(sigma[i].across_m, build, bloom_m);
   }
-  if (bias > 0.0 && BeamsSpanAtLeast(legs, set.count, kMinBiasSpread_rad)) {
-    return FitWithRangeBias(legs, set.count, model, fit.corner_of_leg, refined.T_lidar_shelf, sigma,
+  if (bias > 0.0 && BeamsSpanAtLeast(legs, count, kMinBiasSpread_rad)) {
+    return FitWithRangeBias(legs, count, *h.model, h.corner_of_leg, refined.T_lidar_shelf, sigma,
                             bias)
         .chi2;
   }
-  return LegsChiSquare(legs, set.count, model, fit.corner_of_leg, refined.T_lidar_shelf, sigma);
+  return LegsChiSquare(legs, count, *h.model, h.corner_of_leg, refined.T_lidar_shelf, sigma);
 }
 
-// The legs of a set as FitShelfToReturns reads them: each leg's returns, its outline's
-// silhouette term and possible blends as its fit weighed them (`leg_fits`) and the scan's range
+// The legs of a hypothesis as FitShelfToReturns reads them: each leg's returns, its outline's
+// silhouette term and possible blends as its fit weighed them (`h.leg_fits`) and the scan's range
 // noise; a blended leg by its assumed centre (LegSigmas).
-std::vector<LegReturns> SetReturns(const std::array<Eigen::Vector2d, 4>& legs,
-                                   const std::array<LegFitResult, 4>& leg_fits, const LegSet& set,
-                                   const std::array<int, 4>& corner_of_leg, const ScoreInputs& in) {
-  const std::array<LegSigma, 4> sigma = LegSigmas(legs, set, in);
+std::vector<LegReturns> SetReturns(const Hypothesis& h, const ScoreInputs& in) {
+  const LegSet& set = h.set;
+  const std::array<LegSigma, 4> sigma = LegSigmas(h.legs, set, in);
   std::vector<LegReturns> out;
   for (int i = 0; i < set.count; ++i) {
     const Cluster& c = in.pre.candidates[set.legs[i]];
     LegReturns r;
-    r.corner = corner_of_leg[i];
+    r.corner = h.corner_of_leg[i];
     if (c.assumed_range_m) {
-      r.centre = legs[i];
+      r.centre = h.legs[i];
       r.centre_sigma = sigma[i];
     } else {
       r.points = &c.points;
-      r.silhouette = leg_fits[i].silhouette;
+      r.silhouette = h.leg_fits[i].silhouette;
       r.range_sigma_m = in.range_noise_m;
-      r.mixed = leg_fits[i].mixed;
+      r.mixed = h.leg_fits[i].mixed;
     }
     out.push_back(r);
   }
@@ -325,6 +325,8 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     rec.verdict = Verdict::kFit;
     return h;
   }
+  h.legs = legs;
+  h.corner_of_leg = fit->corner_of_leg;
   // The pose the fitted legs support best, each weighed by its returns; every check below reads
   // it, and its chi-square makes the confidence.
   const std::array<LegSigma, 4> sigma = LegSigmas(legs, set, in);
@@ -404,8 +406,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   // by one bloomed edge by that bloom (ConfidenceChiSquare); legs that only the scan vouches for
   // must match the drawing.
   const double confidence_chi2 =
-      vouched ? ConfidenceChiSquare(legs, set, model, *fit, refined_pose, h.leg_fits, ev, sigma, in)
-              : refined_pose.chi2;
+      vouched ? ConfidenceChiSquare(h, refined_pose, ev, sigma, in) : refined_pose.chi2;
   ev.confidence = ShelfConfidence(ev, confidence_chi2, set.count, config.evidence);
   h.corners_present =
       static_cast<int>(std::count(ev.legs.begin(), ev.legs.end(), LegView::kPresent));
@@ -481,8 +482,6 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     return h;
   }
   rec.verdict = Verdict::kReturned;
-  h.legs = legs;
-  h.corner_of_leg = fit->corner_of_leg;
   h.T_legs = T_lidar_shelf;
   h.legs_chi2 = refined_pose.chi2;
   Detection& d = h.detection;
@@ -645,9 +644,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
   // The shelf fitted to a hypothesis' legs' returns (FitShelfToReturns), made once.
   auto on_returns = [&](Hypothesis& h) -> const ShelfReturnFitResult& {
     if (!h.on_returns) {
-      h.on_returns =
-          FitShelfToReturns(SetReturns(h.legs, h.leg_fits, h.set, h.corner_of_leg, inputs),
-                            *h.model, h.T_legs, config_.leg_fit);
+      h.on_returns = FitShelfToReturns(SetReturns(h, inputs), *h.model, h.T_legs, config_.leg_fit);
     }
     return *h.on_returns;
   };
@@ -800,8 +797,7 @@ DetectionResult Detector::DetectPoints(const std::vector<ScanPoint>& points,
         // The returned pose: the shelf fitted to its legs' returns, each leg's range counted
         // less certain by the pull of a surface close behind it (as LegSigmas does).
         geometry::Pose2 T = on_returns(h).T_lidar_shelf;
-        std::vector<LegReturns> returns =
-            SetReturns(h.legs, h.leg_fits, h.set, h.corner_of_leg, inputs);
+        std::vector<LegReturns> returns = SetReturns(h, inputs);
         if (WidenForBackground(returns, h.set, inputs)) {
           T = FitShelfToReturns(returns, *h.model, T, config_.leg_fit).T_lidar_shelf;
         }
