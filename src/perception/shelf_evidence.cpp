@@ -289,30 +289,32 @@ bool ClosedLoneReturn(const PreprocessOutput& pre, std::size_t s, double min_ste
   });
 }
 
-// True when some other object stands within edge_partner_m of span `s` (not one of the
-// hypothesis's own legs): a leg with a partner that close is most often one of a person's two
-// legs, a shelf's leg has none.
-bool HasPartner(const PreprocessOutput& pre, std::size_t s, const std::vector<int>& own_spans,
-                const EvidenceConfig& config) {
+// True when a span other than `s` that `counts` accepts (by its index) stands within `reach_m`
+// of span `s`, centroid to centroid.
+template <typename Counts>
+bool SpanWithin(const PreprocessOutput& pre, std::size_t s, double reach_m, Counts counts) {
   const Eigen::Vector2d& c = pre.spans[s].centroid;
-  const double r2 = config.edge_partner_m * config.edge_partner_m;
   for (std::size_t o = 0; o < pre.spans.size(); ++o) {
-    if (o != s && !Listed(own_spans, static_cast<int>(o)) &&
-        (pre.spans[o].centroid - c).squaredNorm() < r2) {
+    if (o != s && (pre.spans[o].centroid - c).squaredNorm() < reach_m * reach_m &&
+        counts(static_cast<int>(o))) {
       return true;
     }
   }
   return false;
 }
 
+// True when some other object stands within edge_partner_m of span `s` (not one of the
+// hypothesis's own legs): a leg with a partner that close is most often one of a person's two
+// legs, a shelf's leg has none.
+bool HasPartner(const PreprocessOutput& pre, std::size_t s, const std::vector<int>& own_spans,
+                const EvidenceConfig& config) {
+  return SpanWithin(pre, s, config.edge_partner_m, [&](int o) { return !Listed(own_spans, o); });
+}
+
 // True when span `s` stands within `reach_m` of one of `spans` (centroid to centroid).
 bool NearAny(const PreprocessOutput& pre, std::size_t s, const std::vector<int>& spans,
              double reach_m) {
-  const Eigen::Vector2d& c = pre.spans[s].centroid;
-  return std::any_of(spans.begin(), spans.end(), [&](int o) {
-    return o >= 0 && o != static_cast<int>(s) &&
-           (pre.spans[static_cast<std::size_t>(o)].centroid - c).squaredNorm() < reach_m * reach_m;
-  });
+  return SpanWithin(pre, s, reach_m, [&](int o) { return Listed(spans, o); });
 }
 
 // True when span `o` (a neighbour of span `s` in the scan; none when out of range) stands nearer
