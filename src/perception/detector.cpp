@@ -30,9 +30,9 @@ struct Hypothesis {
   HypothesisRecord record;                      // what was found out about it
   LegSet set;                                   // leg candidates it is made of
   const geometry::ShelfModel* model = nullptr;  // the model it was scored against
-  // Set as soon as its legs fit the model (FitShelf), for the confidence's chi-square
-  // (ConfidenceChiSquare) and the fits on the legs' returns (FitShelfToReturns), made only when a
-  // choice between models or the returned pose needs them.
+  // Filled as Score fits its legs and the model to them (FitShelf), for the confidence's
+  // chi-square (ConfidenceChiSquare) and the fits on the legs' returns (FitShelfToReturns), made
+  // only when a choice between models or the returned pose needs them.
   std::array<Eigen::Vector2d, 4> legs{};             // fitted leg centres
   std::array<LegFitResult, 4> leg_fits{};            // their fits (none for a blended leg)
   std::array<int, 4> corner_of_leg{-1, -1, -1, -1};  // the model's corner each leg stands at
@@ -299,7 +299,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   h.model = &model;
   HypothesisRecord& rec = h.record;
   rec.model = model.name;
-  std::array<Eigen::Vector2d, 4> legs{};
+  std::array<Eigen::Vector2d, 4>& legs = h.legs;
   for (int i = 0; i < set.count; ++i) {
     const Cluster& c = in.pre.candidates[set.legs[i]];
     // A leg seen only blended with its background (CompleteLegSets): on its returns' bearing,
@@ -325,7 +325,6 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
     rec.verdict = Verdict::kFit;
     return h;
   }
-  h.legs = legs;
   h.corner_of_leg = fit->corner_of_leg;
   // The pose the fitted legs support best, each weighed by its returns; every check below reads
   // it, and its chi-square makes the confidence.
