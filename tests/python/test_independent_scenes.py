@@ -195,3 +195,22 @@ def test_one_return_near_the_sensor_is_no_leg(gen, models, source_dir, tmp_path)
                                           "  edge_lone_max_beams: 2.0", "0.0",
                                           ("round_noisy", 2001, 1))
     _assert_found_only_with_rule(gen, sc, rule, without, "tim571")
+
+
+def test_a_leg_placed_by_its_bloomed_edge_does_not_choose_the_model(gen, models, source_dir,
+                                                                      tmp_path):
+    """Scene 21 of row, seed 1001: a 1080x856 in a row, seen by a WLR-716 at 20 mm noise. One of
+    its legs shows one outline edge (its other side behind a neighbour's nearer leg), bloomed by
+    the beam's spot: fitted against that edge it sits 2 cm off across its beam, and on the legs'
+    chi-square as fitted that leg chose the 1075x883. With shelf_fit.choice_edge_bloom_share
+    (0.5) its std across the beam is widened by half the bloom the shelf's legs show, and the
+    other legs choose: the 1080x856 is returned first, within 5 cm; with it off (0) the
+    1075x883 is, at the right place."""
+    sc, rule, without = _with_and_without(gen, models, source_dir, tmp_path,
+                                          "  choice_edge_bloom_share: 0.5", "0.0",
+                                          ("row", 1001, 21))
+    assert sc["findable"] and sc["sensor"]["name"] == "wlr716"
+    assert sc["shelves"][sc["target"]]["model"] == "t1-rect-1080x856"
+    assert rule["outcome"] == "right", rule
+    assert rule["centre_err"] <= gen.MATCH_TOL
+    assert without["outcome"] == "wrong_model", without
