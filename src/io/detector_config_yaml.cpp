@@ -81,7 +81,7 @@ void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
   f.Read("background_mix_max_m", c.background_mix_max_m);
   f.Read("background_mix_any_cap_m", c.background_mix_any_cap_m);
   f.Read("returns_chi2_margin", c.returns_chi2_margin);
-  f.Read("choice_edge_bloom_share", c.choice_edge_bloom_share);
+  f.Read("one_edge_bloom_share", c.one_edge_bloom_share);
   f.RejectUnknown();
 }
 

@@ -248,16 +248,17 @@ double ConfidenceChiSquare(const Hypothesis& h, const ShelfRefineResult& refined
 // The legs' chi-square at the refined pose on which the models of one leg set are chosen (or,
 // within shelf_fit.returns_chi2_margin, sent on to the fit on their returns): a leg placed by one
 // outline edge may sit off across its beam by half the bloom (ConfidenceChiSquare), and its std
-// there is widened by shelf_fit.choice_edge_bloom_share of the bloom granted to the set's legs
+// there is widened by shelf_fit.one_edge_bloom_share of the bloom granted to the set's legs
 // times its range, whatever vouches for the shelf (the choice is between models on the same legs,
-// not whether they are a shelf). Taken as fitted, such a leg 1.5-2 cm off across its beam (its
+// not whether they are a shelf). The fit on the legs' returns holds that edge's bearing as much
+// less certain (SetReturns). Taken as fitted, such a leg 1.5-2 cm off across its beam (its
 // other side behind a nearer leg, its free edge bloomed by a beam's spot) chose the model its
 // misplacement made: the close models 1075 x 883 / 1080 x 856 confused where the rest of the legs
 // told them apart (independent generator, seed 1001: row 0021, open 0049, aisle 0172).
 double ModelChoiceChiSquare(const Hypothesis& h, const ShelfRefineResult& refined,
                             const ShelfEvidence& ev, std::array<LegSigma, 4> sigma,
                             const ScoreInputs& in) {
-  const double bloom = in.config.shelf_fit.choice_edge_bloom_share * ev.width_bloom_rad;
+  const double bloom = in.config.shelf_fit.one_edge_bloom_share * ev.width_bloom_rad;
   bool widened = false;
   for (int i = 0; i < h.set.count; ++i) {
     const double bloom_m = OneEdgeBloom(h, i, bloom);
@@ -287,6 +288,14 @@ std::vector<LegReturns> SetReturns(const Hypothesis& h, const ScoreInputs& in) {
     } else {
       r.points = &c.points;
       r.silhouette = h.leg_fits[i].silhouette;
+      // A leg placed by one outline edge: that edge's bearing is less certain by the bloom, as
+      // in the legs' chi-square (ModelChoiceChiSquare). Independent generator seeds 1-4001 +8
+      // scenes right first, `bloom.yaml` +17, our own scenes within 3 a sample either way.
+      if (r.silhouette.edge_side != 0) {
+        r.silhouette.sigma_rad =
+            std::hypot(r.silhouette.sigma_rad,
+                       in.config.shelf_fit.one_edge_bloom_share * h.record.width_bloom_rad);
+      }
       r.range_sigma_m = in.range_noise_m;
       r.mixed = h.leg_fits[i].mixed;
     }

@@ -131,11 +131,13 @@ struct ShelfFitConfig {
   double returns_chi2_margin = 8.0;       ///< [-] models of one leg set whose legs' chi-squares
                                           ///< differ by less are chosen on the shelf fitted to
                                           ///< the legs' returns (FitShelfToReturns); 0: never
-  double choice_edge_bloom_share = 0.5;   ///< [-] share of the bloom granted to a leg set's legs
-                                          ///< (ShelfEvidence::width_bloom_rad) times range
-                                          ///< added to the across-beam std of a leg placed by
-                                          ///< one outline edge, for the legs' chi-square that
-                                          ///< chooses between models; 0: off
+  double one_edge_bloom_share = 0.5;      ///< [-] share of the bloom granted to a leg set's
+                                          ///< legs (ShelfEvidence::width_bloom_rad) by which a
+                                          ///< leg placed by one outline edge is less certain
+                                          ///< across its beam: in the legs' chi-square that
+                                          ///< chooses between models (times its range) and as
+                                          ///< that edge's bearing in the fit on the legs'
+                                          ///< returns; 0: off
 };
 
 /// What the scan says about each hypothesis (legs seen, hidden or seen through; free space
