@@ -194,34 +194,43 @@ double OneEdgeBloom(const Hypothesis& h, int i, double bloom_rad) {
   return h.leg_fits[i].silhouette.edge_side != 0 ? bloom_rad * h.legs[i].norm() : 0.0;
 }
 
+// [rad] The bearing by which a leg of `h` placed by one outline edge is less certain in the model
+// choice and the fit on its returns: shelf_fit.one_edge_bloom_share of the bloom its legs were
+// granted (ModelChoiceChiSquare).
+double OneEdgeBloomForChoice(const Hypothesis& h, const ScoreInputs& in) {
+  return in.config.shelf_fit.one_edge_bloom_share * h.record.width_bloom_rad;
+}
+
 // The legs' chi-square against the model for the confidence: each leg's own std widened by what a
 // real shelf's legs stand off its drawing (evidence.build_sigma_m). A near leg seen by many beams
 // is known to about a millimetre, so a frame welded 5 mm off its model halved the confidence of
 // a real shelf and lost it (eval-layouts --as-built 0.01 0.05: 74 of 102 misses low_confidence).
-// The pose, the model choice (ModelChoiceChiSquare) and the competition keep the legs' own std:
-// only how sure the detector is of a shelf reads the tolerance, and only of one the map vouches
-// for: with it for every hypothesis (3 mm) posts in clutter matched a model within it and made
-// shelves (eval-layouts --scenes-per-class 1000, seed0 60001 .. 240001: phantom scenes 25 -> 44;
-// only where vouched 25 -> 29, right first 73318 -> 73353 either way). Default 0: off. A scanner's
-// systematic range error (evidence.range_bias_sigma_m) is fitted with the pose (FitWithRangeBias)
-// where the legs' beams span kMinBiasSpread_rad or more: a large shelf around the sensor otherwise
-// looks twice the bias larger than its model and loses its confidence (eval-layouts --lidar
-// config/lidar_variants/range_bias.yaml, 2 cm: large_close 50.5 -> 92.7 %). Legs at one bearing
-// show a bias only as a shift, which the pose takes up; fitting it there too (no spread limit) made
-// one more phantom scene in the 100000 (25 -> 26), at 45 degrees a clutter detection more among
-// 12000 WLR-716 clutter scenes, at 60 degrees neither. A blooming scanner draws every thin object
-// wider by up to the bloom granted to the shelf's legs (ev.width_bloom_rad), half of it at each
-// outline edge. A leg placed by one edge (the other cut by an occluder, a dropout or the field of
-// view: its fit's silhouette term holds that edge) sits off across the beam by up to that half at
-// its range, where the beam step alone allowed millimetres: its across-beam std is widened by
-// evidence.width_bloom_edge_share of bloom times range. Legs peeking past a box, their free edge
-// bloomed 1.2-2.9 cm, sank the confidence of the shelf behind it below its minimum (independent
-// generator at 1.5 times its spot, seed 1: 6 of 28 misses). Legs with both edges seen keep their
-// std (an allowance for unequal bloom there too lifted round-legged shelves' legs into rectangular
-// phantoms on the blooming receivers), and so do the legs of three whose fourth corner nothing
-// accounts for (neither seen nor hidden): their fit to the drawing is then all that tells them from
-// legs of different shelves (an against_wall scene under blend_1p5m.yaml: two shelves' legs and a
-// lone return made a 1075 x 883 at 0.30 with it).
+// The pose, the model choice and the competition do not read that tolerance: only how sure the
+// detector is of a shelf does, and only of one the map vouches for: with it for
+// every hypothesis (3 mm) posts in clutter matched a model within it and made shelves
+// (eval-layouts --scenes-per-class 1000, seed0 60001 .. 240001: phantom scenes 25 -> 44; only
+// where vouched 25 -> 29, right first 73318 -> 73353 either way). Default 0: off.
+//
+// A scanner's systematic range error (evidence.range_bias_sigma_m) is fitted with the pose
+// (FitWithRangeBias) where the legs' beams span kMinBiasSpread_rad or more: a large shelf around
+// the sensor otherwise looks twice the bias larger than its model and loses its confidence
+// (eval-layouts --lidar config/lidar_variants/range_bias.yaml, 2 cm: large_close 50.5 -> 92.7 %).
+// Legs at one bearing show a bias only as a shift, which the pose takes up; fitting it there too
+// (no spread limit) made one more phantom scene in the 100000 (25 -> 26), at 45 degrees a clutter
+// detection more among 12000 WLR-716 clutter scenes, at 60 degrees neither.
+//
+// A blooming scanner draws every thin object wider by up to the bloom granted to the shelf's legs
+// (ev.width_bloom_rad), half of it at each outline edge. A leg placed by one edge (the other cut by
+// an occluder, a dropout or the field of view: its fit's silhouette term holds that edge) sits off
+// across the beam by up to that half at its range, where the beam step alone allowed millimetres:
+// its across-beam std is widened by evidence.width_bloom_edge_share of bloom times range. Legs
+// peeking past a box, their free edge bloomed 1.2-2.9 cm, sank the confidence of the shelf behind
+// it below its minimum (independent generator at 1.5 times its spot, seed 1: 6 of 28 misses).
+// Legs with both edges seen keep their std (an allowance for unequal bloom there too lifted
+// round-legged shelves' legs into rectangular phantoms on the blooming receivers), and so do the
+// legs of three whose fourth corner nothing accounts for (neither seen nor hidden): their fit to
+// the drawing is then all that tells them from legs of different shelves (an against_wall scene
+// under blend_1p5m.yaml: two shelves' legs and a lone return made a 1075 x 883 at 0.30 with it).
 double ConfidenceChiSquare(const Hypothesis& h, const ShelfRefineResult& refined,
                            const ShelfEvidence& ev, std::array<LegSigma, 4> sigma,
                            const ScoreInputs& in) {
@@ -249,16 +258,15 @@ double ConfidenceChiSquare(const Hypothesis& h, const ShelfRefineResult& refined
 // within shelf_fit.returns_chi2_margin, sent on to the fit on their returns): a leg placed by one
 // outline edge may sit off across its beam by half the bloom (ConfidenceChiSquare), and its std
 // there is widened by shelf_fit.one_edge_bloom_share of the bloom granted to the set's legs
-// times its range, whatever vouches for the shelf (the choice is between models on the same legs,
-// not whether they are a shelf). The fit on the legs' returns holds that edge's bearing as much
-// less certain (SetReturns). Taken as fitted, such a leg 1.5-2 cm off across its beam (its
-// other side behind a nearer leg, its free edge bloomed by a beam's spot) chose the model its
-// misplacement made: the close models 1075 x 883 / 1080 x 856 confused where the rest of the legs
-// told them apart (independent generator, seed 1001: row 0021, open 0049, aisle 0172).
+// (OneEdgeBloomForChoice) times its range, whatever vouches for the shelf (the choice is between
+// models on the same legs, not whether they are a shelf). The fit on the legs' returns holds that
+// edge's bearing as much less certain (SetReturns). Taken as fitted, such a leg 1.5-2 cm off across
+// its beam (its other side behind a nearer leg, its free edge bloomed by a beam's spot) chose the
+// model its misplacement made: the close models 1075 x 883 / 1080 x 856 confused where the rest of
+// the legs told them apart (independent generator, seed 1001: row 0021, open 0049, aisle 0172).
 double ModelChoiceChiSquare(const Hypothesis& h, const ShelfRefineResult& refined,
-                            const ShelfEvidence& ev, std::array<LegSigma, 4> sigma,
-                            const ScoreInputs& in) {
-  const double bloom = in.config.shelf_fit.one_edge_bloom_share * ev.width_bloom_rad;
+                            std::array<LegSigma, 4> sigma, const ScoreInputs& in) {
+  const double bloom = OneEdgeBloomForChoice(h, in);
   bool widened = false;
   for (int i = 0; i < h.set.count; ++i) {
     const double bloom_m = OneEdgeBloom(h, i, bloom);
@@ -292,9 +300,7 @@ std::vector<LegReturns> SetReturns(const Hypothesis& h, const ScoreInputs& in) {
       // in the legs' chi-square (ModelChoiceChiSquare). Independent generator seeds 1-4001 +8
       // scenes right first, `bloom.yaml` +17, our own scenes within 3 a sample either way.
       if (r.silhouette.edge_side != 0) {
-        r.silhouette.sigma_rad =
-            std::hypot(r.silhouette.sigma_rad,
-                       in.config.shelf_fit.one_edge_bloom_share * h.record.width_bloom_rad);
+        r.silhouette.sigma_rad = std::hypot(r.silhouette.sigma_rad, OneEdgeBloomForChoice(h, in));
       }
       r.range_sigma_m = in.range_noise_m;
       r.mixed = h.leg_fits[i].mixed;
@@ -520,7 +526,7 @@ Hypothesis Score(const LegSet& set, const geometry::ShelfModel& model, int model
   }
   rec.verdict = Verdict::kReturned;
   h.T_legs = T_lidar_shelf;
-  h.legs_chi2 = ModelChoiceChiSquare(h, refined_pose, ev, sigma, in);
+  h.legs_chi2 = ModelChoiceChiSquare(h, refined_pose, sigma, in);
   Detection& d = h.detection;
   d.model = model.name;
   // The pose the competition reads (a returned shelf's is then fitted to its legs' returns):
