@@ -95,16 +95,19 @@ def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edg
     beams = [(ux, uy, leg) for _, ux, uy, leg in hits]
     hit_legs = {leg for _, _, _, leg in hits}
 
+    def range_at(i):
+        """Beam i's range, None where the scan has no such beam or it returned nothing."""
+        r = ranges[i] if 0 <= i < len(ranges) else None
+        return r if r is not None and math.isfinite(r) else None
+
     def shows_edge(outer, neighbour):
         step = neighbour - outer
-        while past_bloom and 0 <= neighbour < len(ranges) and ranges[neighbour] is not None and \
-                math.isfinite(ranges[neighbour]) and \
-                abs(ranges[neighbour] - ranges[outer]) <= hit_sigmas * sigma:
-            neighbour += step
-        if neighbour < 0 or neighbour >= len(ranges):
-            return False
-        r = ranges[neighbour]
-        return r is not None and math.isfinite(r) and r > ranges[outer] + hit_sigmas * sigma
+        if past_bloom:
+            while (r := range_at(neighbour)) is not None and \
+                    abs(r - ranges[outer]) <= hit_sigmas * sigma:
+                neighbour += step
+        r = range_at(neighbour)
+        return r is not None and r > ranges[outer] + hit_sigmas * sigma
 
     edge_weights = []
     outward = 1 if da > 0 else -1  # beam index step toward higher bearings
