@@ -12,6 +12,7 @@ Usage
     PYTHONPATH=build/python /usr/bin/python3 scripts/independent_scenes.py \
         --scenes-per-class 200 --seed 1 [--jobs 2] [--json FILE] [--dump DIR [--dump-all]]
         [--classes a,b] [--list-failures] [--echo first|strongest] [--spot-scale F]
+        [--map-knows-model]
 
 --dump DIR writes each failing scene as DIR/<class>_<seed>_<index>.scan.json (a LaserScan that
 `shelfdock detect --scan` reads) and .truth.json (shelves, preset, class, seed, sensor draws,
@@ -19,6 +20,9 @@ noise, outcome and the `shelfdock detect ... --explain` command that re-runs it)
 every scene, right or not (what a bound over all scenes, such as scripts/model_choice_bound.py's,
 needs once converted to its truth format).  --echo and
 --spot-scale are sensitivity knobs of the sensor model (below); the defaults are the model.
+--map-knows-model detects each target scene with the target's model alone (the map names the
+shelf's model as well as its place, as `shelfdock detect --model NAME`), clutter scenes with every
+model: what is left of the failures then is not the close models' confusion.
 
 The module is importable (tests/python/test_independent_scenes.py loads it by path):
 `generate_scene(cls, seed, index)` draws one scene, `check_physical(scene)` lists what would make
@@ -1152,9 +1156,10 @@ def is_failure(rec):
     return rec["outcome"] in ("wrong_model", "wrong_place", "phantom_first")
 
 
-def dump_scene(sc, rec, d):
+def dump_scene(sc, rec, d, only_model=None):
     """Writes <cls>_<seed>_<index>.scan.json (a LaserScan `shelfdock detect` reads) and
-    .truth.json (shelves, preset, class, seed, sensor, noise, outcome, the command)."""
+    .truth.json (shelves, preset, class, seed, sensor, noise, outcome, the command; with
+    `only_model`, the command detects that model alone)."""
     os.makedirs(d, exist_ok=True)
     base = os.path.join(d, f"{sc['cls']}_{sc['seed']}_{sc['index']:04d}")
     r = sc["ranges"]
@@ -1170,7 +1175,8 @@ def dump_scene(sc, rec, d):
     root = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
     cmd = (f"{root}/build/bin/shelfdock detect --models {root}/config/models.yaml "
            f"--scan {os.path.abspath(base)}.scan.json "
-           f"--preset {p[0]:.4f},{p[1]:.4f},{p[2]:.4f} --explain")
+           f"--preset {p[0]:.4f},{p[1]:.4f},{p[2]:.4f} --explain"
+           + (f" --model {only_model}" if only_model else ""))
     truth = dict(cls=sc["cls"], seed=sc["seed"], index=sc["index"], sensor=sc["sensor"],
                  noise=sc["sensor"]["noise"], shelves=sc["shelves"], target=sc["target"],
                  preset=p, legs_seen=sc["legs_seen"], findable=sc["findable"],
@@ -1187,10 +1193,19 @@ _DET = None
 _OPTS = {}
 
 
-def _init(models, params, dump, model_opts, dump_all=False):
+_ONE_MODEL = {}
+
+
+def _init(models, params, dump, model_opts, dump_all=False, map_knows_model=False):
     global _DET
     import shelfdock
     _DET = shelfdock.Detector(models=models, params=params)
+    _ONE_MODEL.clear()
+    if map_knows_model:
+        # The map names the target's model too (as `shelfdock detect --model NAME` and
+        # `eval-layouts --map-knows-model`): one detector per model, that model alone.
+        for name in MODEL_NAMES:
+            _ONE_MODEL[name] = shelfdock.Detector(models=models, params=params, only=[name])
     _OPTS["dump"] = dump
     _OPTS["dump_all"] = dump_all
     _OPTS["model"] = model_opts
@@ -1199,22 +1214,27 @@ def _init(models, params, dump, model_opts, dump_all=False):
 def _work(task):
     cls, seed, idx = task
     sc = generate_scene(cls, seed, idx, **_OPTS.get("model", {}))
-    rec = evaluate_scene(_DET, sc)
+    det, only_model = _DET, None
+    if _ONE_MODEL and sc["target"] is not None:
+        only_model = sc["shelves"][sc["target"]]["model"]
+        det = _ONE_MODEL[only_model]
+    rec = evaluate_scene(det, sc)
     if _OPTS.get("dump") and (_OPTS.get("dump_all") or is_failure(rec)):
-        dump_scene(sc, rec, _OPTS["dump"])
+        dump_scene(sc, rec, _OPTS["dump"], only_model)
     return rec
 
 
 def run(models, seed, per_class, classes=CLASSES, params=None, jobs=1, dump=None,
-        spot_scale=1.0, echo="first", dump_all=False):
+        spot_scale=1.0, echo="first", dump_all=False, map_knows_model=False):
     """All scenes of a sweep; returns the list of per-scene records."""
     tasks = [(c, seed, i) for c in classes for i in range(per_class)]
     mo = dict(spot_scale=spot_scale, echo=echo)
+    init_args = (models, params, dump, mo, dump_all, map_knows_model)
     if jobs <= 1:
-        _init(models, params, dump, mo, dump_all)
+        _init(*init_args)
         return [_work(t) for t in tasks]
     import multiprocessing as mp
-    with mp.get_context("fork").Pool(jobs, _init, (models, params, dump, mo, dump_all)) as pool:
+    with mp.get_context("fork").Pool(jobs, _init, init_args) as pool:
         return pool.map(_work, tasks, chunksize=8)
 
 
@@ -1306,6 +1326,9 @@ def main(argv=None):
                     help="sensitivity: scale every beam's spot (divergence, smear, aperture)")
     ap.add_argument("--echo", choices=["first", "strongest"], default="first",
                     help="sensitivity: which echo a beam reports (default: the first one)")
+    ap.add_argument("--map-knows-model", action="store_true",
+                    help="the map names the target's model too: detect with that model alone "
+                         "(clutter scenes with every model)")
     a = ap.parse_args(argv)
     classes = [c for c in a.classes.split(",") if c]
     for c in classes:
@@ -1313,13 +1336,14 @@ def main(argv=None):
             ap.error(f"unknown class {c}; one of {', '.join(CLASSES)}")
     t0 = time.time()
     recs = run(os.path.abspath(a.models), a.seed, a.scenes_per_class, classes, a.params, a.jobs,
-               a.dump, a.spot_scale, a.echo, a.dump_all)
+               a.dump, a.spot_scale, a.echo, a.dump_all, a.map_knows_model)
     wall = time.time() - t0
     rows = summarise(recs, classes)
     print(f"independent scenes: seed {a.seed}, {a.scenes_per_class} per class, "
           f"{len(recs)} scenes, {wall:.1f} s wall, {a.jobs} jobs"
           + (f", spot x{a.spot_scale}" if a.spot_scale != 1.0 else "")
-          + (f", {a.echo} echo" if a.echo != "first" else ""))
+          + (f", {a.echo} echo" if a.echo != "first" else "")
+          + (", the map knows the model" if a.map_knows_model else ""))
     print(format_table(rows))
     sb = sensor_breakdown(recs)
     print("per sensor (findable, right %): " + "; ".join(
@@ -1334,7 +1358,8 @@ def main(argv=None):
     if a.json:
         with open(a.json, "w") as f:
             json.dump(dict(seed=a.seed, scenes_per_class=a.scenes_per_class, wall_s=wall,
-                           spot_scale=a.spot_scale, echo=a.echo, table=rows, per_sensor=sb,
+                           spot_scale=a.spot_scale, echo=a.echo, map_knows_model=a.map_knows_model,
+                           table=rows, per_sensor=sb,
                            failures=fails), f, indent=1)
     return 0
 
