@@ -47,7 +47,8 @@ import numpy as np
 import yaml
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pose_bound import first_hit, leg_centres, outline, target_hits  # noqa: E402  (one ray cast)
+from pose_bound import (as_layout_truth, first_hit, leg_centres, outline,  # noqa: E402
+                        target_hits)  # one ray cast, one reading of either generator's truth
 
 
 def sized(model, length, width):
@@ -139,22 +140,6 @@ def scene_information(scan, truth, model, hit_sigmas, edge_sigma_beams, seen_edg
 
 def phi(x):
     return 0.5 * math.erfc(-x / math.sqrt(2.0))
-
-
-def as_layout_truth(truth):
-    """A scene's truth in `shelfdock eval-layouts --dump-failures` terms: that file as it is, or
-    one scripts/independent_scenes.py --dump --dump-all wrote (its target an index into its
-    shelves, its outcome "right" / "wrong_model", no count of the legs a detection used)."""
-    if "cls" not in truth or "shelves" not in truth:
-        return truth
-    target = truth.get("target")
-    if target is None or not truth.get("findable") or not truth.get("detections"):
-        return {}
-    shelf, first = truth["shelves"][target], truth["detections"][0]
-    outcome = {"right": "right-first", "wrong_model": "wrong-first"}.get(truth["outcome"])
-    return dict(target=dict(model=shelf["model"], x=shelf["x"], y=shelf["y"], yaw=shelf["yaw"]),
-                first=dict(model=first["model"], x=first["x"], y=first["y"], legs_used=None),
-                outcome=outcome, noise_sigma_m=truth["noise"], lidar=truth["sensor"]["name"])
 
 
 def bound(dump_dir, models, twin_within=0.05, hit_sigmas=3.0, edge_sigma_beams=1.0 / math.sqrt(12.0),

@@ -2,7 +2,8 @@
 """The centre and heading error no estimator could beat on the same returns (Cramer-Rao bound).
 
 Reads the scenes `shelfdock eval-layouts --dump-failures DIR --dump-all` wrote (each scan with its
-truth). For every scene whose first detection is the target (its model, centre within 50 mm), at
+truth), or those `scripts/independent_scenes.py --dump DIR --dump-all` wrote (the standoff there
+the target centre's distance, no count of the legs a detection used). For every scene whose first detection is the target (its model, centre within 50 mm), at
 the range noise and standoff asked for, it finds the returns that hit the target's legs as they
 truly stand (the beam's first hit on a leg section, ray cast from the sensor, within
 `--hit-sigmas` range-noise sigmas of the measured range; beams hidden by something nearer or
@@ -155,6 +156,26 @@ def scene_bound(scan, truth, model, hit_sigmas, outline_edges=True):
     return info
 
 
+def as_layout_truth(truth):
+    """A scene's truth in `shelfdock eval-layouts --dump-failures` terms: that file as it is, or
+    one scripts/independent_scenes.py --dump --dump-all wrote (its target an index into its
+    shelves, its outcome "right" / "wrong_model", no count of the legs a detection used; the
+    standoff is the target centre's distance from the sensor, as that script's own table has it).
+    {} for a scene without a findable target or a detection."""
+    if "cls" not in truth or "shelves" not in truth:
+        return truth
+    target = truth.get("target")
+    if target is None or not truth.get("findable") or not truth.get("detections"):
+        return {}
+    shelf, first = truth["shelves"][target], truth["detections"][0]
+    outcome = {"right": "right-first", "wrong_model": "wrong-first"}.get(truth["outcome"])
+    return dict(target=dict(model=shelf["model"], x=shelf["x"], y=shelf["y"], yaw=shelf["yaw"]),
+                first=dict(model=first["model"], x=first["x"], y=first["y"], yaw=first["yaw"],
+                           legs_used=None),
+                outcome=outcome, noise_sigma_m=truth["noise"], lidar=truth["sensor"]["name"],
+                standoff_m=math.hypot(shelf["x"], shelf["y"]))
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
@@ -174,7 +195,7 @@ def main():
     drawn = defaultdict(list)
     skipped = 0
     for path in sorted(glob.glob(os.path.join(args.dir, "*.truth.json"))):
-        truth = json.load(open(path))
+        truth = as_layout_truth(json.load(open(path)))
         if truth.get("outcome") != "right-first":
             continue
         if abs(truth["noise_sigma_m"] - args.noise) > 1e-9 or truth["standoff_m"] > args.max_standoff:
@@ -199,7 +220,8 @@ def main():
         dyaw = math.remainder(first["yaw"] - target["yaw"], period)
         err = (math.hypot(first["x"] - target["x"], first["y"] - target["y"]), abs(dyaw))
         band = f"{int(truth['standoff_m'])}-{int(truth['standoff_m']) + 1} m"
-        for key in ("all", truth["lidar"], band, f"{first['legs_used']} legs"):
+        legs = [f"{first['legs_used']} legs"] if first.get("legs_used") else []
+        for key in ["all", truth["lidar"], band] + legs:
             measured[key].append(err)
             drawn[key].append(np.column_stack([np.hypot(draws[:, 0], draws[:, 1]),
                                                np.abs(draws[:, 2])]))
