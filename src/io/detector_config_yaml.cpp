@@ -82,6 +82,7 @@ void ReadShelfFit(YamlFields f, perception::ShelfFitConfig& c) {
   f.Read("background_mix_any_cap_m", c.background_mix_any_cap_m);
   f.Read("returns_chi2_margin", c.returns_chi2_margin);
   f.Read("one_edge_bloom_share", c.one_edge_bloom_share);
+  f.Read("spot_bloom_share", c.spot_bloom_share);
   f.RejectUnknown();
 }
 

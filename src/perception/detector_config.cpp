@@ -77,6 +77,7 @@ std::optional<ConfigViolation> FindConfigViolation(const DetectorConfig& c) {
           ">= 0 (0: never)");
   k.Check(f.returns_chi2_margin >= 0.0, "shelf_fit.returns_chi2_margin", ">= 0 (0: never)");
   k.Check(f.one_edge_bloom_share >= 0.0, "shelf_fit.one_edge_bloom_share", ">= 0 (0: off)");
+  k.Check(f.spot_bloom_share >= 0.0, "shelf_fit.spot_bloom_share", ">= 0 (0: off)");
 
   const auto& e = c.evidence;
   k.Check(e.present_margin_m > 0.0, "evidence.present_margin_m", "> 0");

@@ -138,6 +138,12 @@ struct ShelfFitConfig {
                                           ///< chooses between models (times its range) and as
                                           ///< that edge's bearing in the fit on the legs'
                                           ///< returns; 0: off
+  double spot_bloom_share = 0.5;          ///< [-] share of the bloom granted to a leg set's
+                                          ///< legs taken as each beam's spot on either side
+                                          ///< of it in the fit on the legs' returns: a beam
+                                          ///< that passes a leg within it returned from the
+                                          ///< nearest part it reached (ReturnRayResidual);
+                                          ///< 0: off
 };
 
 /// What the scan says about each hypothesis (legs seen, hidden or seen through; free space

@@ -39,10 +39,11 @@ struct ShelfReturnCost {
   }
 
   // Return q's residuals (range, miss distance) in metres against a section at `centre`, turned
-  // with the shelf.
+  // with the shelf, seen through a spot `spot_half_rad` wide on each side of its beam.
   template <typename T>
-  void ReturnResidual(const T* centre, const T& c, const T& s, const ScanPoint& q, T* r) const {
-    ReturnRayResidual(centre, q, round, radius, c, s, half_x, half_y, r);
+  void ReturnResidual(const T* centre, const T& c, const T& s, const ScanPoint& q,
+                      double spot_half_rad, T* r) const {
+    ReturnRayResidual(centre, q, round, radius, c, s, half_x, half_y, r, spot_half_rad * q.range);
   }
 
   // Leg l's outline bearing error [rad] (its silhouette term, unweighted).
@@ -79,7 +80,7 @@ struct ShelfReturnCost {
       const double inv_sigma = 1.0 / leg.range_sigma_m;
       for (std::size_t i = 0; i < leg.points->size(); ++i) {
         T* r = residual + k;
-        ReturnResidual(centre, c, s, (*leg.points)[i], r);
+        ReturnResidual(centre, c, s, (*leg.points)[i], leg.spot_half_rad, r);
         r[0] *= T(w[i] * inv_sigma);
         r[1] *= T(w[i] * inv_sigma);
         k += 2;
@@ -158,7 +159,7 @@ ShelfReturnFitResult FitShelfToReturns(const std::vector<LegReturns>& legs,
       cost.LegCentre(x.data(), c, s, l, centre);
       for (std::size_t i = 0; i < leg.points->size(); ++i) {
         double r[2];
-        cost.ReturnResidual(centre, c, s, (*leg.points)[i], r);
+        cost.ReturnResidual(centre, c, s, (*leg.points)[i], leg.spot_half_rad, r);
         weights[l][i] = HuberSqrtWeight(std::hypot(r[0], r[1]), config.loss_scale_m);
         // As FitLeg: an outer return that may be a blend keeps its range as far as the noise
         // explains it.

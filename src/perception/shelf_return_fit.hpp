@@ -26,6 +26,10 @@ struct LegReturns {
   double range_sigma_m = 0.01;  ///< [m] std of one return's range on this leg
   /// Its outer returns that may be blends with the surface beyond (none by default).
   MixedEdges mixed;
+  /// [rad] Half the angle by which the beams' spots draw the leg wider than it stands (half the
+  /// bloom granted to the set's legs): a return whose beam passes the leg by less than this
+  /// times its range came from the part of the leg its spot reached (ReturnRayResidual).
+  double spot_half_rad = 0.0;
   /// A blended leg: where it stands and how well that is known along / across its beam.
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   LegSigma centre_sigma;

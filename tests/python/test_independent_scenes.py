@@ -239,3 +239,31 @@ def test_the_map_naming_the_model_leaves_no_model_confusion(gen, records, models
         assert again["outcome"] == "right", (r["cls"], r["index"], again["outcome"],
                                              again["detections"])
     assert not [r for r in known if r["phantom"] or r["outcome"] == "wrong_model"]
+
+
+def test_a_beams_spot_reaches_the_front_of_a_leg_it_passes(gen, records, models, source_dir,
+                                                           tmp_path):
+    """This generator's beams return a thin leg they pass within their spot. A leg turned a little
+    from square to the beams shows its back corner as its outline's edge; a bloomed return past it
+    came from the leg's front, a leg's depth nearer. Measured against the back corner it pulled the
+    shelf toward the sensor (1 mm per metre of range on seeds 1-2001); with
+    shelf_fit.spot_bloom_share (0.5: half the bloom on each side of the beam) the fit on the legs'
+    returns measures it against the nearest corner the spot reaches. Seed 7, 30 scenes per class:
+    the right-first scenes' RMS centre error 4.48 mm with it, 4.89 mm with it off (0). Asserted:
+    lower with it, no phantom either way, and at most one right-first scene fewer."""
+    config = (source_dir / "config" / "detector.yaml").read_text()
+    assert "  spot_bloom_share: 0.5" in config
+    off = tmp_path / "no_spot.yaml"
+    off.write_text(config.replace("  spot_bloom_share: 0.5", "  spot_bloom_share: 0.0"))
+    without = gen.run(str(models), SEED, PER_CLASS, params=str(off), jobs=1)
+
+    def rms(recs):
+        e = [r["centre_err"] for r in recs if r["outcome"] == "right"]
+        return math.sqrt(sum(x * x for x in e) / len(e)), len(e)
+
+    (with_rms, with_n), (without_rms, without_n) = rms(records), rms(without)
+    print(f"\nRMS centre error {with_rms * 1e3:.2f} mm over {with_n} scenes with the spot, "
+          f"{without_rms * 1e3:.2f} mm over {without_n} without")
+    assert with_rms < without_rms
+    assert with_n >= without_n - 1
+    assert not [r for r in without if r["phantom"]]
