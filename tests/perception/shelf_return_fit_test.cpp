@@ -41,6 +41,17 @@ sim::LidarConfig NoisyWlr() {
   return lidar;
 }
 
+// A blooming receiver: 10 mm noise, 9 mrad beams of 15 footprint rays, any echo returned (a beam
+// returns a thin leg it only grazes with its spot).
+sim::LidarConfig BloomingWlr() {
+  sim::LidarConfig lidar;
+  lidar.range_noise_sigma_m = 0.01;
+  lidar.beam_divergence_rad = 0.009;
+  lidar.footprint_rays = 15;
+  lidar.min_echo_fraction = 0.01;
+  return lidar;
+}
+
 ShelfScan ScanShelf(const geometry::ShelfModel& model, const geometry::Pose2& truth,
                     std::uint64_t seed, const sim::LidarConfig& lidar = NoisyWlr()) {
   sim::World world;
@@ -186,11 +197,7 @@ TEST(ShelfReturnFitTest, FarLegsSeenByFewReturnsAreHeldWhereTheOtherLegsPutThem)
 TEST(ShelfReturnFitTest, ReturnsBloomedPastAFaceOnLegsEdgesDoNotTurnTheShelf) {
   const auto model = testing::PaperModels()[3];
   ASSERT_EQ(model.name, "t1-rect-1080x856");
-  sim::LidarConfig bloom;
-  bloom.range_noise_sigma_m = 0.01;
-  bloom.beam_divergence_rad = 0.009;
-  bloom.footprint_rays = 15;
-  bloom.min_echo_fraction = 0.01;
+  const sim::LidarConfig bloom = BloomingWlr();
   SweepErrors errors;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
     const double standoff = 1.9 + 0.1 * static_cast<double>(seed % 5);
@@ -226,11 +233,7 @@ TEST(ShelfReturnFitTest, ReturnsBloomedPastAFaceOnLegsEdgesDoNotTurnTheShelf) {
 TEST(ShelfReturnFitTest, ReturnsPastALegsEdgeAreMeasuredWhereItsSpotReaches) {
   const auto model = testing::PaperModels()[3];
   ASSERT_EQ(model.name, "t1-rect-1080x856");
-  sim::LidarConfig bloom;
-  bloom.range_noise_sigma_m = 0.01;
-  bloom.beam_divergence_rad = 0.009;
-  bloom.footprint_rays = 15;
-  bloom.min_echo_fraction = 0.01;
+  const sim::LidarConfig bloom = BloomingWlr();
   double along_plain = 0.0, along_spot = 0.0, rms_plain = 0.0, rms_spot = 0.0;
   int fitted = 0;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
