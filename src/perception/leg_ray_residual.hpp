@@ -2,7 +2,6 @@
 // Ray-cast residuals of one LiDAR beam against a leg section, for the leg fit (3.3). Templated
 // for automatic differentiation (ceres::TinySolverAutoDiffFunction).
 
-#include <array>
 #include <cmath>
 #include <utility>
 
@@ -87,28 +86,37 @@ void BoxRayResidual(const T* c, double ux, double uy, double range, const T& cos
     return;
   }
   // Missed: every corner lies on one side of the beam; the nearest across it.
-  std::array<T, 4> along, across_abs;
-  int nearest = 0;
-  for (int k = 0; k < 4; ++k) {
-    const double sx = k < 2 ? -1.0 : 1.0;
-    const double sy = k % 2 == 0 ? -1.0 : 1.0;
+  auto corner = [&](double sx, double sy, T* along, T* across_abs) {
     const T px = c[0] + cos_a * T(sx * half_x) - sin_a * T(sy * half_y);
     const T py = c[1] + sin_a * T(sx * half_x) + cos_a * T(sy * half_y);
     const T across = T(ux) * py - T(uy) * px;
-    across_abs[k] = across < T(0) ? -across : across;
-    along[k] = T(ux) * px + T(uy) * py;
-    if (across_abs[k] < across_abs[nearest]) nearest = k;
-  }
-  T range_at = along[nearest];
-  if (spot_m > 0.0) {
-    // The spot's reach: at least to the silhouette corner.
-    const T reach = across_abs[nearest] > T(spot_m) ? across_abs[nearest] : T(spot_m);
-    for (int k = 0; k < 4; ++k) {
-      if (across_abs[k] <= reach && along[k] < range_at) range_at = along[k];
+    *across_abs = across < T(0) ? -across : across;
+    *along = T(ux) * px + T(uy) * py;
+  };
+  T best_along(0), best_across(1e9);
+  for (const double sx : {-1.0, 1.0}) {
+    for (const double sy : {-1.0, 1.0}) {
+      T along, across_abs;
+      corner(sx, sy, &along, &across_abs);
+      if (across_abs < best_across) {
+        best_across = across_abs;
+        best_along = along;
+      }
     }
   }
-  out[0] = T(range) - range_at;
-  out[1] = across_abs[nearest];
+  if (spot_m > 0.0) {
+    // The nearest corner the spot reaches: its reach at least to the silhouette corner.
+    const T reach = best_across > T(spot_m) ? best_across : T(spot_m);
+    for (const double sx : {-1.0, 1.0}) {
+      for (const double sy : {-1.0, 1.0}) {
+        T along, across_abs;
+        corner(sx, sy, &along, &across_abs);
+        if (across_abs <= reach && along < best_along) best_along = along;
+      }
+    }
+  }
+  out[0] = T(range) - best_along;
+  out[1] = best_across;
 }
 
 /// Return q's residuals (CircleRayResidual or BoxRayResidual) against a leg section centred at
