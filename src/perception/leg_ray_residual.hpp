@@ -34,19 +34,22 @@ void CircleRayResidual(const T* c, double ux, double uy, double range, double ra
   const T b = T(ux) * c[0] + T(uy) * c[1];
   const T e = T(ux) * c[1] - T(uy) * c[0];
   const T e_abs = e < T(0) ? -e : e;
-  // The floor keeps the derivative finite at the tangent.
-  auto depth = [&](const T& offset) {
+  // How far in front of the centre the circle lies at `offset` across the beam; the floor keeps
+  // the derivative finite at the tangent.
+  auto depth = [radius](const T& offset) {
     const T h2 = T(radius * radius) - offset * offset;
     return ceres::sqrt(h2 > T(1e-8) ? h2 : T(1e-8));
   };
   if (e_abs < T(radius)) {
     out[0] = T(range) - (b - depth(e));
     out[1] = T(0);
-  } else {
+    return;
+  }
+  out[0] = T(range) - b;
+  out[1] = e_abs - T(radius);
+  if (spot_m > 0.0) {
     const T reached = e_abs - T(spot_m);
-    out[0] = reached < T(radius) ? T(range) - (b - depth(reached > T(0) ? reached : T(0)))
-                                 : T(range) - b;
-    out[1] = e_abs - T(radius);
+    if (reached < T(radius)) out[0] = T(range) - (b - depth(reached > T(0) ? reached : T(0)));
   }
 }
 
