@@ -3,8 +3,9 @@
 
 Reads the scenes `shelfdock eval-layouts --dump-failures DIR --dump-all` wrote (each scan with its
 truth), or those `scripts/independent_scenes.py --dump DIR --dump-all` wrote (the standoff there
-the target centre's distance, no count of the legs a detection used). For every scene whose first detection is the target (its model, centre within 50 mm), at
-the range noise and standoff asked for, it finds the returns that hit the target's legs as they
+the target centre's distance, no count of the legs a detection used). For every scene whose first
+detection is the target (its model, centre within 50 mm), at the range noise and standoff asked
+for, it finds the returns that hit the target's legs as they
 truly stand (the beam's first hit on a leg section, ray cast from the sensor, within
 `--hit-sigmas` range-noise sigmas of the measured range; beams hidden by something nearer or
 blended are left out) and builds the Fisher information of the shelf's pose (x, y, yaw) from:

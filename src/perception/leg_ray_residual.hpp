@@ -108,7 +108,9 @@ void BoxRayResidual(const T* c, double ux, double uy, double range, const T& cos
     }
   }
   if (spot_m > 0.0) {
-    // The nearest corner the spot reaches: its reach at least to the silhouette corner.
+    // The nearest corner the spot reaches: its reach at least to the silhouette corner. The
+    // corners are walked again rather than kept from the walk above, which every scan without a
+    // bloom takes for every missing beam of every fit.
     const T reach = best_across > T(spot_m) ? best_across : T(spot_m);
     for (const double sx : {-1.0, 1.0}) {
       for (const double sy : {-1.0, 1.0}) {
