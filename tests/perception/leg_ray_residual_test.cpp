@@ -69,9 +69,8 @@ TEST(LegRayResidualTest, TheResidualsAreContinuousAcrossTheSilhouette) {
     double edge = -1.0;
     for (const double sx : {-1.0, 1.0}) {
       for (const double sy : {-1.0, 1.0}) {
-        const double px = kCentre[0] + std::cos(yaw) * sx * kHalf - std::sin(yaw) * sy * kHalf;
-        const double py = kCentre[1] + std::sin(yaw) * sx * kHalf + std::cos(yaw) * sy * kHalf;
-        edge = std::max(edge, std::atan2(py, px));
+        const auto p = Corner(yaw, sx, sy);
+        edge = std::max(edge, std::atan2(p[1], p[0]));
       }
     }
     const double eps = 1e-7;
