@@ -101,14 +101,8 @@ def test_the_scans_bloom_read_finds_what_strict_widths_miss(gen, records, models
     scenes lost are counted with the bloom read for the leg widths alone: the model choice reads
     the bloom too (shelf_fit.one_edge_bloom_share), a trade measured on thousands of scenes
     (docs/detector_history.md, thirty-sixth session; here it costs against_wall 3)."""
-    config = (source_dir / "config" / "detector.yaml").read_text()
-    assert "  width_bloom_max_rad: 0.02" in config
-    assert "  one_edge_bloom_share: 0.5" in config
-    strict = tmp_path / "strict_widths.yaml"
-    strict.write_text(config.replace("  width_bloom_max_rad: 0.02", "  width_bloom_max_rad: 0.0"))
-    widths_only = tmp_path / "bloom_for_widths.yaml"
-    widths_only.write_text(config.replace("  one_edge_bloom_share: 0.5",
-                                          "  one_edge_bloom_share: 0.0"))
+    strict = _params_with(source_dir, tmp_path, "  width_bloom_max_rad: 0.02", "0.0")
+    widths_only = _params_with(source_dir, tmp_path, "  one_edge_bloom_share: 0.5", "0.0")
     without = gen.run(str(models), SEED, PER_CLASS, params=str(strict), jobs=1)
     for_widths = gen.run(str(models), SEED, PER_CLASS, params=str(widths_only), jobs=1)
     with_rows, without_rows = gen.summarise(records), gen.summarise(without)
@@ -136,16 +130,23 @@ def test_dump_all_writes_every_scene_with_its_outcome(gen, models, tmp_path):
         assert json.loads(t.read_text())["outcome"] == by_name[name]
 
 
+def _params_with(source_dir, tmp_path, setting, value):
+    """A copy of config/detector.yaml (in tmp_path) with its `setting` line ("  key: value",
+    asserted there) set to `value`; its path."""
+    config = (source_dir / "config" / "detector.yaml").read_text()
+    assert setting in config
+    key = setting.split(":")[0]
+    path = tmp_path / f"{key.strip()}_{value}.yaml"
+    path.write_text(config.replace(setting, f"{key}: {value}"))
+    return path
+
+
 def _with_and_without(gen, models, source_dir, tmp_path, setting, off_value, scene):
     """One independent scene (class, seed, index) scored by the default detector and by one with
     config/detector.yaml's `setting` line ("  key: value", asserted there) set to `off_value`.
     Returns the scene and the two records."""
     shelfdock = pytest.importorskip("shelfdock")
-    config = (source_dir / "config" / "detector.yaml").read_text()
-    assert setting in config
-    key = setting.split(":")[0]
-    off = tmp_path / "off.yaml"
-    off.write_text(config.replace(setting, f"{key}: {off_value}"))
+    off = _params_with(source_dir, tmp_path, setting, off_value)
     sc = gen.generate_scene(*scene)
     rule = gen.evaluate_scene(shelfdock.Detector(models=str(models)), sc)
     without = gen.evaluate_scene(shelfdock.Detector(models=str(models), params=str(off)), sc)
@@ -251,10 +252,7 @@ def test_a_beams_spot_reaches_the_front_of_a_leg_it_passes(gen, records, models,
     returns measures it against the nearest corner the spot reaches. Seed 7, 30 scenes per class:
     the right-first scenes' RMS centre error 4.48 mm with it, 4.89 mm with it off (0). Asserted:
     lower with it, no phantom either way, and at most one right-first scene fewer."""
-    config = (source_dir / "config" / "detector.yaml").read_text()
-    assert "  spot_bloom_share: 0.5" in config
-    off = tmp_path / "no_spot.yaml"
-    off.write_text(config.replace("  spot_bloom_share: 0.5", "  spot_bloom_share: 0.0"))
+    off = _params_with(source_dir, tmp_path, "  spot_bloom_share: 0.5", "0.0")
     without = gen.run(str(models), SEED, PER_CLASS, params=str(off), jobs=1)
 
     def rms(recs):
